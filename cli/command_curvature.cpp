@@ -1,0 +1,98 @@
+// `elastica curvature IN -o OUT.ply`: discrete mean and Gaussian curvature and the total
+// curvature energy of a mesh.
+#include "commands.h"
+#include "mesh_files.h"
+
+#include <elastica/curvature.h>
+#include <elastica/energy.h>
+#include <elastica/errors.h>
+#include <elastica/sign_convention.h>
+#include <elastica/topology.h>
+#include <elastica/vcg_adapter.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+namespace elastica::cli {
+namespace {
+
+struct CurvatureArgs {
+  std::string input, output;
+  bool ascii = false;
+  VertexArea area = VertexArea::Mixed;
+  bool lambdaFix = false;
+};
+
+void runCurvature(const CurvatureArgs& a) {
+  io::checkOutputPath(a.output, a.input);
+  VcgMesh vm;
+  loadMesh(a.input, vm);
+  const TriMesh mesh = toTriMesh(vm);
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  if (topo.inconsistentEdgeCount() > 0) {
+    throw InvalidInputError(a.input + ": faces are not consistently oriented (" +
+                            plural(topo.inconsistentEdgeCount(), "edge") +
+                            " traversed the same way by both faces); re-orient them first, e.g. in MeshLab: "
+                            "Filters > Normals > Re-Orient all faces coherently");
+  }
+  if (topo.nonManifoldVertexCount() > 0)
+    std::cerr << "warning: " << a.input << ": " << plural(topo.nonManifoldVertexCount(), "non-manifold vertex")
+              << " (several fans of faces meet there); curvature there is not meaningful\n";
+
+  const Geometry geo = computeGeometry(topo, mesh.positions, a.area);
+  CurvatureOptions opt;
+  opt.h2k = a.lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
+  const Curvature c = computeCurvature(topo, geo, mesh.positions, opt);
+  const double energy = totalCurvatureEnergy(topo, geo, c);
+
+  storeCurvature(vm, a.lambdaFix ? c.Hflow : c.H, c.K);
+  vcg::tri::UpdateNormal<VcgMesh>::PerVertexNormalizedPerFace(vm);
+  io::PlyWriteOptions w;
+  w.binary = !a.ascii;
+  w.vertexQuality = w.vertexColor = w.curvature = true;
+  io::writePly(a.output, vm, w);
+
+  auto [hmin, hmax] = std::minmax_element(c.H.begin(), c.H.end());
+  std::printf("%s: %s, %s, %s, Euler characteristic %d\n", a.input.c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
+              plural(mesh.faceCount(), "face").c_str(), topo.boundaryEdgeCount() ? "with boundary" : "closed",
+              topo.eulerCharacteristic());
+  // + 0.0 turns a negative zero into 0 for printing.
+  std::printf("mean curvature H (+1/r on a sphere): %.6g .. %.6g\n", reportedMeanCurvature(*hmax) + 0.0,
+              reportedMeanCurvature(*hmin) + 0.0);
+  if (a.lambdaFix)
+    std::printf("paper's lambda fix: lambda = %.6g on %zu vertices (H written is H/lambda there)\n", c.lambda,
+                c.lambdaVertices);
+  const DegeneracyCounts& d = geo.degenerate;
+  if (d.total() > 0)
+    std::printf("degenerate, given zero weight: %zu zero-area faces, %zu zero-length edges, %zu vertices without "
+                "area, %zu isolated vertices\n",
+                d.zeroAreaFaces, d.zeroLengthEdges, d.zeroAreaVertices, d.isolatedVertices);
+  std::printf("total curvature energy E = %.9g\n", energy);
+  std::printf("wrote %s\n", a.output.c_str());
+}
+
+}  // namespace
+
+void addCurvatureCommand(CLI::App& app) {
+  auto args = std::make_shared<CurvatureArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "curvature",
+      "Compute discrete mean curvature H, Gaussian curvature K and the total curvature energy\n"
+      "E = sum (4H^2 - 2K) A_i. Writes a PLY with per-vertex mean_curvature, gaussian_curvature,\n"
+      "quality (= H, +1/r on a sphere with outward normals) and a colour ramp by H.");
+  cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
+  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  const std::map<std::string, VertexArea> areas{{"mixed", VertexArea::Mixed},
+                                                {"barycentric", VertexArea::Barycentric}};
+  cmd->add_option("--area", args->area,
+                  "vertex area: mixed (Meyer et al.'s mixed Voronoi area, default) or barycentric (the paper's A/3)")
+      ->transform(CLI::CheckedTransformer(areas, CLI::ignore_case));
+  cmd->add_flag("--lambda-fix", args->lambdaFix,
+                "apply the paper's lambda rescaling of H where H^2 < K (guarded); E still uses raw H");
+  cmd->callback([args] { runCurvature(*args); });
+}
+
+}  // namespace elastica::cli

@@ -1,0 +1,13 @@
+// Subcommands of the `elastica` program. Each registers itself on the CLI11 app with its options
+// and a callback that does the work; main() turns exceptions into one line on stderr and an exit
+// code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace elastica::cli {
+
+void addCurvatureCommand(CLI::App& app);
+void addGenerateCommand(CLI::App& app);
+
+}  // namespace elastica::cli

@@ -1,0 +1,32 @@
+// elastica: fair triangle meshes with the discrete elastica flow (Yoshizawa & Belyaev 2002).
+// Exit codes: 0 success, 1 the work failed (message on stderr), 2 bad command line.
+#include "commands.h"
+
+#include <elastica/errors.h>
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{"elastica: fair triangle meshes with the discrete elastica flow\n"
+               "(Yoshizawa & Belyaev, Fair Triangle Mesh Generation with Discrete Elastica, GMP 2002)"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "elastica 0.1.0");
+  elastica::cli::addCurvatureCommand(app);
+  elastica::cli::addGenerateCommand(app);
+
+  try {
+    app.parse(argc, argv);  // runs the chosen subcommand's callback
+  } catch (const CLI::Success& e) {  // --help, --version
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "elastica: " << e.what() << "\n(run 'elastica --help' or 'elastica COMMAND --help')\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "elastica: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "elastica: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

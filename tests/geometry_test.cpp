@@ -1,0 +1,119 @@
+#include "test_meshes.h"
+
+#include <elastica/geometry.h>
+#include <elastica/laplacian.h>
+#include <elastica/shapes.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+
+using namespace elastica;
+
+namespace {
+
+std::vector<TriMesh> testMeshes() {
+  return {shapes::icosphere(2.0, 3), shapes::torus(3, 1, 32, 16), shapes::grid(6, 5, 0.5),
+          test::jittered(shapes::icosphere(1.0, 2), 0.02), test::jittered(shapes::torus(2, 0.7, 20, 9), 0.05, 7)};
+}
+
+}  // namespace
+
+// Mixed and barycentric areas both partition each face's area among its corners, so the vertex
+// areas sum to the surface area on every mesh (libigl's mass-matrix identity).
+TEST(Geometry, VertexAreasSumToSurfaceArea) {
+  for (const TriMesh& m : testMeshes()) {
+    const Topology t(m.vertexCount(), m.faces);
+    for (VertexArea type : {VertexArea::Mixed, VertexArea::Barycentric}) {
+      const Geometry g = computeGeometry(t, m.positions, type);
+      const double total = std::accumulate(g.faceArea.begin(), g.faceArea.end(), 0.0);
+      const double sum = std::accumulate(g.vertexArea.begin(), g.vertexArea.end(), 0.0);
+      EXPECT_NEAR(sum, total, 1e-12 * total);
+      for (double a : g.vertexArea) EXPECT_GT(a, 0);
+    }
+  }
+}
+
+TEST(Geometry, AnglesOfEachFaceSumToPi) {
+  for (const TriMesh& m : testMeshes()) {
+    const Topology t(m.vertexCount(), m.faces);
+    const Geometry g = computeGeometry(t, m.positions);
+    for (int f = 0; f < t.faceCount(); ++f)
+      EXPECT_NEAR(g.cornerAngle[3 * f] + g.cornerAngle[3 * f + 1] + g.cornerAngle[3 * f + 2], M_PI, 1e-12);
+  }
+}
+
+TEST(Geometry, SphereNormalsAreRadialAndOutward) {
+  const TriMesh m = shapes::icosphere(3.0, 3);
+  const Topology t(m.vertexCount(), m.faces);
+  const Geometry g = computeGeometry(t, m.positions);
+  for (int v = 0; v < t.vertexCount(); ++v) {
+    EXPECT_NEAR(g.vertexNormal[v].norm(), 1.0, 1e-12);
+    EXPECT_GT(g.vertexNormal[v].dot(m.positions[v].normalized()), 0.9999);
+  }
+}
+
+// The cotangent Laplacian reproduces linear functions exactly on a planar mesh (any triangles),
+// and annihilates constants everywhere.
+TEST(Laplacian, ExactOnLinearFunctionsInThePlane) {
+  TriMesh m = test::jittered(shapes::grid(8, 8, 1.0), 0.2, 3);
+  for (Vec3& p : m.positions) p.z() = 0;
+  const Topology t(m.vertexCount(), m.faces);
+  const Geometry g = computeGeometry(t, m.positions);
+  std::vector<double> f(m.vertexCount()), lf;
+  for (int v = 0; v < m.vertexCount(); ++v) f[v] = 2.0 * m.positions[v].x() - 3.0 * m.positions[v].y() + 5.0;
+  cotanLaplacian(t, g, f, lf);
+  std::vector<Vec3> lp;
+  cotanLaplacian(t, g, m.positions, lp);
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if (t.isBoundaryVertex(v)) continue;
+    EXPECT_NEAR(lf[v], 0.0, 1e-12);
+    EXPECT_NEAR(lp[v].norm(), 0.0, 1e-12);
+  }
+  std::vector<double> ones(m.vertexCount(), 1.0), l1;
+  cotanLaplacian(t, g, ones, l1);
+  for (double x : l1) EXPECT_EQ(x, 0.0);
+}
+
+// Δ_B P = 2H N: on a sphere of radius r the Laplacian of the positions has length 2/r and
+// points inward.
+TEST(Laplacian, MeanCurvatureVectorOfSphere) {
+  const double r = 2.0;
+  const TriMesh m = shapes::icosphere(r, 4);
+  const Topology t(m.vertexCount(), m.faces);
+  const Geometry g = computeGeometry(t, m.positions);
+  std::vector<Vec3> lp;
+  cotanLaplacian(t, g, m.positions, lp);
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    EXPECT_NEAR(lp[v].norm(), 2 / r, 0.005 * 2 / r);
+    EXPECT_LT(lp[v].normalized().dot(g.vertexNormal[v]), -0.9999);
+  }
+}
+
+TEST(Geometry, DegenerateElementsAreCountedAndFinite) {
+  // A strip of 4 triangles plus a zero-area triangle (collinear) and a coincident vertex.
+  TriMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}, {1, 0, 0} /* copy of 1 */};
+  m.faces = {{0, 1, 4}, {0, 4, 3}, {1, 2, 5}, {1, 5, 4}, {0, 6, 1} /* zero area, zero-length edge */};
+  const Topology t(m.vertexCount(), m.faces);
+  const Geometry g = computeGeometry(t, m.positions);
+  EXPECT_EQ(g.degenerate.zeroAreaFaces, 1u);
+  EXPECT_EQ(g.degenerate.zeroLengthEdges, 1u);
+  EXPECT_DOUBLE_EQ(g.minFaceArea, 0.5);
+  for (double x : g.cornerCot) EXPECT_TRUE(std::isfinite(x));
+  for (double x : g.vertexArea) EXPECT_TRUE(std::isfinite(x));
+  for (const Vec3& n : g.vertexNormal) EXPECT_TRUE(n.allFinite());
+}
+
+TEST(Geometry, AllPointsCoincidentStaysFinite) {
+  TriMesh m;
+  m.positions = {{1, 1, 1}, {1, 1, 1}, {1, 1, 1}, {1, 1, 1}};
+  m.faces = {{0, 1, 2}, {0, 2, 3}};
+  const Topology t(m.vertexCount(), m.faces);
+  const Geometry g = computeGeometry(t, m.positions);
+  EXPECT_EQ(g.degenerate.zeroAreaFaces, 2u);
+  EXPECT_EQ(g.degenerate.zeroAreaVertices, 4u);
+  for (double x : g.cornerCot) EXPECT_TRUE(std::isfinite(x));
+  for (double w : g.edgeWeight) EXPECT_TRUE(std::isfinite(w));
+}

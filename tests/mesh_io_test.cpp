@@ -1,0 +1,143 @@
+#include "file_helpers.h"
+
+#include <elastica/errors.h>
+#include <elastica/io/mesh_reader.h>
+#include <elastica/io/mesh_writer.h>
+#include <elastica/shapes.h>
+#include <elastica/vcg_adapter.h>
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+
+namespace elastica {
+using test::ScratchDir;
+using test::writeText;
+
+namespace {
+
+// A unit square pyramid without its base: 5 vertices, 4 triangles, with one quad variant.
+const char* kPyramidObj =
+    "# pyramid\n"
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
+    "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
+
+std::string errorOf(const std::string& path) {
+  VcgMesh m;
+  try {
+    io::readMesh(path, m);
+  } catch (const IoError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(MeshIo, PlyRoundTripBinaryAndAscii) {
+  ScratchDir dir("ply");
+  const TriMesh src = shapes::torus(3, 1, 16, 8);
+  for (bool binary : {true, false}) {
+    VcgMesh vm;
+    fromTriMesh(src, vm);
+    io::PlyWriteOptions opt;
+    opt.binary = binary;
+    const std::string path = dir.file(binary ? "b.ply" : "a.ply");
+    io::writePly(path, vm, opt);
+    VcgMesh back;
+    io::readMesh(path, back);
+    const TriMesh got = toTriMesh(back);
+    ASSERT_EQ(got.vertexCount(), src.vertexCount());
+    ASSERT_EQ(got.faces, src.faces);
+    for (int v = 0; v < src.vertexCount(); ++v) {
+      // Binary PLY keeps doubles exactly; ASCII keeps what the printed digits hold.
+      EXPECT_NEAR((got.positions[v] - src.positions[v]).norm(), 0.0, binary ? 0.0 : 1e-6);
+    }
+  }
+}
+
+// This vcglib's OBJ importer drops every face touching the first vertex: ours must keep them,
+// and triangulate polygons.
+TEST(MeshIo, ObjKeepsFacesAtFirstVertexAndTriangulatesPolygons) {
+  ScratchDir dir("obj");
+  writeText(dir.file("p.obj"), kPyramidObj);
+  VcgMesh m;
+  io::readMesh(dir.file("p.obj"), m);
+  EXPECT_EQ(m.vn, 5);
+  EXPECT_EQ(m.fn, 4);
+  writeText(dir.file("q.obj"), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  const io::ReadReport r = io::readMesh(dir.file("q.obj"), m);
+  EXPECT_EQ(m.fn, 2);
+  EXPECT_EQ(r.polygonsTriangulated, 1);
+  // v/vt/vn index forms and negative (relative) indices.
+  writeText(dir.file("r.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf -3//1 -2//1 -1//1\n");
+  io::readMesh(dir.file("r.obj"), m);
+  EXPECT_EQ(m.fn, 1);
+}
+
+TEST(MeshIo, OffAndStl) {
+  ScratchDir dir("offstl");
+  writeText(dir.file("p.off"), "OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
+                               "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+  VcgMesh m;
+  io::readMesh(dir.file("p.off"), m);
+  EXPECT_EQ(m.vn, 5);
+  EXPECT_EQ(m.fn, 4);
+  // ASCII STL: two triangles sharing an edge, 6 corners → 4 vertices after merging.
+  writeText(dir.file("s.stl"),
+            "solid s\n"
+            "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nendloop\nendfacet\n"
+            "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\n"
+            "endsolid s\n");
+  const io::ReadReport r = io::readMesh(dir.file("s.stl"), m);
+  EXPECT_EQ(m.vn, 4);
+  EXPECT_EQ(m.fn, 2);
+  EXPECT_EQ(r.duplicateVerticesMerged, 2);
+}
+
+TEST(MeshIo, ClearErrors) {
+  ScratchDir dir("errors");
+  EXPECT_NE(errorOf(dir.file("missing.ply")).find("no such file"), std::string::npos);
+  std::filesystem::create_directory(dir.file("d.ply"));
+  EXPECT_NE(errorOf(dir.file("d.ply")).find("is a directory"), std::string::npos);
+  writeText(dir.file("m.xyz"), "1 2 3\n");
+  EXPECT_NE(errorOf(dir.file("m.xyz")).find("unknown mesh file extension"), std::string::npos);
+  writeText(dir.file("e.ply"), "");
+  EXPECT_NE(errorOf(dir.file("e.ply")).find("empty file"), std::string::npos);
+  writeText(dir.file("g.ply"), std::string("\x7f\x45\x4c\x46 binary garbage \x01\x02\x03", 24));
+  EXPECT_NE(errorOf(dir.file("g.ply")).find("malformed PLY"), std::string::npos);
+  writeText(dir.file("n.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                               "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                               "0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n");
+  EXPECT_NE(errorOf(dir.file("n.ply")).find("non-finite"), std::string::npos);
+  writeText(dir.file("i.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
+  EXPECT_FALSE(errorOf(dir.file("i.obj")).empty());
+  writeText(dir.file("nofaces.off"), "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  EXPECT_NE(errorOf(dir.file("nofaces.off")).find("no triangles"), std::string::npos);
+  // Every message starts with the file name.
+  EXPECT_EQ(errorOf(dir.file("e.ply")).rfind(dir.file("e.ply"), 0), 0u);
+}
+
+TEST(MeshIo, OutputChecksAndAtomicWrite) {
+  ScratchDir dir("out");
+  VcgMesh vm;
+  fromTriMesh(shapes::icosphere(1.0, 1), vm);
+  EXPECT_THROW(io::checkOutputPath(dir.file("nodir/x.ply")), IoError);
+  EXPECT_THROW(io::checkOutputPath(dir.path().string()), IoError);
+  io::PlyWriteOptions opt;
+  io::writePly(dir.file("in.ply"), vm, opt);
+  EXPECT_THROW(io::checkOutputPath(dir.file("in.ply"), dir.file("in.ply")), IoError);
+  EXPECT_THROW(io::checkOutputPath(dir.file("./in.ply"), dir.file("in.ply")), IoError);
+  // The written file has ordinary permissions (not mkstemp's 0600) and no temporary is left.
+  struct stat st {};
+  ASSERT_EQ(stat(dir.file("in.ply").c_str(), &st), 0);
+  EXPECT_NE(st.st_mode & S_IRGRP, 0u);
+  int entries = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) entries += e.is_regular_file();
+  EXPECT_EQ(entries, 1);
+  // A failed write leaves the destination untouched.
+  EXPECT_THROW(io::writePly(dir.file("nodir/x.ply"), vm, opt), IoError);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("nodir")));
+}
+
+}  // namespace elastica

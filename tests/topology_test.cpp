@@ -1,0 +1,97 @@
+#include <elastica/errors.h>
+#include <elastica/shapes.h>
+#include <elastica/topology.h>
+
+#include <gtest/gtest.h>
+
+using namespace elastica;
+
+TEST(Topology, IcosphereIsClosedGenusZero) {
+  for (int level = 0; level <= 3; ++level) {
+    const TriMesh m = shapes::icosphere(1.0, level);
+    const Topology t(m.vertexCount(), m.faces);
+    EXPECT_EQ(t.eulerCharacteristic(), 2);
+    EXPECT_EQ(t.boundaryEdgeCount(), 0);
+    EXPECT_EQ(t.inconsistentEdgeCount(), 0);
+    EXPECT_EQ(t.nonManifoldVertexCount(), 0);
+    EXPECT_EQ(2 * t.edgeCount(), 3 * t.faceCount());
+    int valenceSum = 0;
+    for (int v = 0; v < t.vertexCount(); ++v) valenceSum += t.valence(v);
+    EXPECT_EQ(valenceSum, 2 * t.edgeCount());
+  }
+}
+
+TEST(Topology, TorusHasEulerCharacteristicZero) {
+  const TriMesh m = shapes::torus(3, 1, 24, 12);
+  const Topology t(m.vertexCount(), m.faces);
+  EXPECT_EQ(t.eulerCharacteristic(), 0);
+  EXPECT_EQ(t.boundaryEdgeCount(), 0);
+  EXPECT_EQ(t.inconsistentEdgeCount(), 0);
+}
+
+TEST(Topology, GridBoundary) {
+  const int nx = 7, ny = 4;
+  const TriMesh m = shapes::grid(nx, ny);
+  const Topology t(m.vertexCount(), m.faces);
+  EXPECT_EQ(t.boundaryEdgeCount(), 2 * (nx + ny));
+  EXPECT_EQ(t.eulerCharacteristic(), 1);
+  int boundaryVertices = 0;
+  for (int v = 0; v < t.vertexCount(); ++v) boundaryVertices += t.isBoundaryVertex(v);
+  EXPECT_EQ(boundaryVertices, 2 * (nx + ny));
+}
+
+TEST(Topology, RingAndCornersAreConsistent) {
+  const TriMesh m = shapes::icosphere(1.0, 2);
+  const Topology t(m.vertexCount(), m.faces);
+  for (int v = 0; v < t.vertexCount(); ++v) {
+    // On a closed manifold every vertex has as many incident faces as neighbours.
+    EXPECT_EQ(t.cornerEnd(v) - t.cornerBegin(v), t.valence(v));
+    for (int k = t.ringBegin(v); k < t.ringEnd(v); ++k) {
+      const auto& ev = t.edgeVertices(t.ringEdge(k));
+      EXPECT_TRUE((ev[0] == v && ev[1] == t.ringVertex(k)) || (ev[1] == v && ev[0] == t.ringVertex(k)));
+    }
+    for (int k = t.cornerBegin(v); k < t.cornerEnd(v); ++k) EXPECT_EQ(m.faces[t.corner(k) / 3][t.corner(k) % 3], v);
+  }
+  for (int e = 0; e < t.edgeCount(); ++e) {
+    // The corner opposite an edge is the face's third vertex.
+    for (int c : t.edgeOppositeCorners(e)) {
+      ASSERT_GE(c, 0);
+      const int opposite = m.faces[c / 3][c % 3];
+      EXPECT_NE(opposite, t.edgeVertices(e)[0]);
+      EXPECT_NE(opposite, t.edgeVertices(e)[1]);
+    }
+  }
+}
+
+TEST(Topology, RejectsBadIndices) {
+  EXPECT_THROW(Topology(3, {{0, 1, 3}}), InvalidInputError);
+  EXPECT_THROW(Topology(3, {{0, -1, 2}}), InvalidInputError);
+  EXPECT_THROW(Topology(3, {{0, 1, 1}}), InvalidInputError);
+}
+
+TEST(Topology, RejectsNonManifoldEdgeWithItsVertices) {
+  // Three triangles on the edge 0–1.
+  try {
+    Topology(5, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    FAIL() << "expected InvalidInputError";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("non-manifold edge between vertices 0 and 1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Topology, CountsInconsistentOrientationAndBowTies) {
+  // Two triangles sharing edge 1–2, the second flipped.
+  const Topology flipped(4, {{0, 1, 2}, {1, 2, 3}});
+  EXPECT_EQ(flipped.inconsistentEdgeCount(), 1);
+  const Topology fine(4, {{0, 1, 2}, {2, 1, 3}});
+  EXPECT_EQ(fine.inconsistentEdgeCount(), 0);
+  // Two triangles touching only at vertex 0.
+  const Topology bowtie(5, {{0, 1, 2}, {0, 3, 4}});
+  EXPECT_EQ(bowtie.nonManifoldVertexCount(), 1);
+}
+
+TEST(Topology, IsolatedVertex) {
+  const Topology t(4, {{0, 1, 2}});
+  EXPECT_TRUE(t.isIsolatedVertex(3));
+  EXPECT_FALSE(t.isIsolatedVertex(0));
+}

@@ -1,0 +1,99 @@
+// Adapters between any vcglib triangle mesh (MeshLab's float CMeshO, our double VcgMesh) and the
+// core's TriMesh. Templates, so the plugin and the CLI share them. Numerics never run on the vcg
+// mesh: copy in, compute in double, write back once.
+#pragma once
+
+#include <elastica/sign_convention.h>
+#include <elastica/types.h>
+
+#include <vcg/complex/complex.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace elastica {
+
+/// Copies the live (non-deleted) vertices and faces of `m` into a TriMesh, in vcg order.
+/// Vertex i of the result is the i-th live vertex of m.
+template <class VcgMeshT>
+TriMesh toTriMesh(const VcgMeshT& m) {
+  TriMesh out;
+  out.positions.reserve(m.vn);
+  out.faces.reserve(m.fn);
+  std::vector<int> index(m.vert.size(), -1);
+  for (size_t i = 0; i < m.vert.size(); ++i) {
+    if (m.vert[i].IsD()) continue;
+    const auto& p = m.vert[i].cP();
+    index[i] = static_cast<int>(out.positions.size());
+    out.positions.emplace_back(double(p[0]), double(p[1]), double(p[2]));
+  }
+  for (const auto& f : m.face) {
+    if (f.IsD()) continue;
+    Face t;
+    for (int k = 0; k < 3; ++k) t[k] = index[vcg::tri::Index(m, f.cV(k))];
+    out.faces.push_back(t);
+  }
+  return out;
+}
+
+/// Replaces the contents of `m` by `mesh` (vertex i ↔ m.vert[i], face f ↔ m.face[f]).
+template <class VcgMeshT>
+void fromTriMesh(const TriMesh& mesh, VcgMeshT& m) {
+  using S = typename VcgMeshT::ScalarType;
+  m.Clear();
+  auto vi = vcg::tri::Allocator<VcgMeshT>::AddVertices(m, mesh.positions.size());
+  for (const Vec3& p : mesh.positions) (vi++)->P() = typename VcgMeshT::CoordType(S(p[0]), S(p[1]), S(p[2]));
+  auto fi = vcg::tri::Allocator<VcgMeshT>::AddFaces(m, mesh.faces.size());
+  for (const Face& t : mesh.faces) {
+    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[t[k]];
+    ++fi;
+  }
+}
+
+/// Writes positions back into the live vertices of `m` (same order as toTriMesh).
+template <class VcgMeshT>
+void writePositions(VcgMeshT& m, const std::vector<Vec3>& p) {
+  using S = typename VcgMeshT::ScalarType;
+  size_t k = 0;
+  for (auto& v : m.vert) {
+    if (v.IsD()) continue;
+    v.P() = typename VcgMeshT::CoordType(S(p[k][0]), S(p[k][1]), S(p[k][2]));
+    ++k;
+  }
+}
+
+/// Stores curvatures on the live vertices of `m`, in the reported sign convention (H = +1/r on an
+/// outward sphere): per-vertex float attributes "mean_curvature" and "gaussian_curvature",
+/// quality = H, and MeshLab's "Colorize by vertex quality" ramp (red = low H through yellow, green,
+/// cyan to blue = high H), over the 2–98 % percentiles so a few spikes do not wash out the picture.
+/// `paperH` is the core's H (sign_convention.h).
+template <class VcgMeshT>
+void storeCurvature(VcgMeshT& m, const std::vector<double>& paperH, const std::vector<double>& K) {
+  auto hAttr = vcg::tri::Allocator<VcgMeshT>::template GetPerVertexAttribute<float>(m, "mean_curvature");
+  auto kAttr = vcg::tri::Allocator<VcgMeshT>::template GetPerVertexAttribute<float>(m, "gaussian_curvature");
+  std::vector<double> reported(paperH.size());
+  size_t k = 0;
+  for (auto vi = m.vert.begin(); vi != m.vert.end(); ++vi) {
+    if (vi->IsD()) continue;
+    reported[k] = reportedMeanCurvature(paperH[k]);
+    hAttr[vi] = float(reported[k]);
+    kAttr[vi] = float(K[k]);
+    vi->Q() = typename VcgMeshT::VertexType::QualityType(reported[k]);
+    ++k;
+  }
+  if (reported.empty()) return;
+  std::vector<double> sorted = reported;
+  auto percentile = [&](double q) {
+    auto it = sorted.begin() + static_cast<long>(q * double(sorted.size() - 1));
+    std::nth_element(sorted.begin(), it, sorted.end());
+    return *it;
+  };
+  const double lo = percentile(0.02), hi = percentile(0.98);
+  for (auto& v : m.vert) {
+    if (v.IsD()) continue;
+    v.C().SetColorRamp(float(lo), float(hi), float(v.Q()));
+  }
+}
+
+}  // namespace elastica

@@ -1,0 +1,36 @@
+#include <elastica/laplacian.h>
+
+namespace elastica {
+namespace {
+
+// One gather loop for both value types: each vertex reads its own ring, so the loop has no
+// write conflicts and parallelises over vertices.
+template <class T, class Zero>
+void gatherLaplacian(const Topology& topo, const Geometry& g, const std::vector<T>& f, std::vector<T>& out,
+                     Zero zero) {
+  const int nv = topo.vertexCount();
+  out.resize(nv);
+#pragma omp parallel for schedule(static)
+  for (int i = 0; i < nv; ++i) {
+    T sum = zero();
+    if (g.vertexArea[i] > 0) {
+      for (int k = topo.ringBegin(i); k < topo.ringEnd(i); ++k)
+        sum += g.edgeWeight[topo.ringEdge(k)] * (f[topo.ringVertex(k)] - f[i]);
+      sum /= g.vertexArea[i];
+    }
+    out[i] = sum;
+  }
+}
+
+}  // namespace
+
+void cotanLaplacian(const Topology& topo, const Geometry& g, const std::vector<Vec3>& p, std::vector<Vec3>& out) {
+  gatherLaplacian(topo, g, p, out, [] { return Vec3(Vec3::Zero()); });
+}
+
+void cotanLaplacian(const Topology& topo, const Geometry& g, const std::vector<double>& f,
+                    std::vector<double>& out) {
+  gatherLaplacian(topo, g, f, out, [] { return 0.0; });
+}
+
+}  // namespace elastica
