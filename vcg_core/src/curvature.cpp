@@ -1,4 +1,5 @@
 #include <elastica/curvature.h>
+#include <elastica/parallel.h>
 #include <elastica/laplacian.h>
 
 #include <algorithm>
@@ -17,7 +18,7 @@ void computeCurvature(const Topology& topo, const Geometry& geo, const std::vect
   out.Hflow.resize(nv);
   out.g.resize(nv);
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
     if (!geo.isRegular(i)) {
       out.H[i] = out.K[i] = 0;
@@ -52,7 +53,7 @@ void computeCurvature(const Topology& topo, const Geometry& geo, const std::vect
   if (out.lambdaVertices > 0) out.lambda = std::max(lambda, opt.lambdaFloor);
 
   std::size_t clamped = 0;
-#pragma omp parallel for reduction(+ : clamped) schedule(static)
+#pragma omp parallel for reduction(+ : clamped) schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
     const double h = inD(i) ? out.H[i] / out.lambda : out.H[i];
     const double g = h * h - out.K[i];

@@ -1,4 +1,5 @@
 #include <elastica/energy.h>
+#include <elastica/parallel.h>
 
 namespace elastica {
 
@@ -6,7 +7,7 @@ double totalCurvatureEnergy(const Topology& topo, const Geometry& geo, const Cur
                             const std::vector<std::uint8_t>* active) {
   const int nv = topo.vertexCount();
   double e = 0;
-#pragma omp parallel for reduction(+ : e) schedule(static)
+#pragma omp parallel for reduction(+ : e) schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
     if (!geo.isRegular(i) || topo.isBoundaryVertex(i) || (active && !(*active)[i])) continue;
     e += (4 * c.H[i] * c.H[i] - 2 * c.K[i]) * geo.vertexArea[i];

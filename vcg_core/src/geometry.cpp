@@ -1,4 +1,5 @@
 #include <elastica/errors.h>
+#include <elastica/parallel.h>
 #include <elastica/geometry.h>
 
 #include <algorithm>
@@ -21,7 +22,7 @@ double meanEdgeLength(const Topology& topo, const std::vector<Vec3>& p) {
   const int ne = topo.edgeCount();
   if (ne == 0) return 0;
   double sum = 0;
-#pragma omp parallel for reduction(+ : sum) schedule(static)
+#pragma omp parallel for reduction(+ : sum) schedule(static) if (ne > kParallelGrain)
   for (int e = 0; e < ne; ++e) {
     const auto& ev = topo.edgeVertices(e);
     sum += (p[ev[1]] - p[ev[0]]).norm();
@@ -55,7 +56,7 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   const auto& faces = topo.faces();
   std::size_t zeroAreaFaces = 0;
   double minArea = std::numeric_limits<double>::infinity();
-#pragma omp parallel for reduction(+ : zeroAreaFaces) reduction(min : minArea) schedule(static)
+#pragma omp parallel for reduction(+ : zeroAreaFaces) reduction(min : minArea) schedule(static) if (nf > kParallelGrain)
   for (int f = 0; f < nf; ++f) {
     const Face& t = faces[f];
     const Vec3 n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
@@ -75,7 +76,9 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
       const size_t c = 3 * static_cast<size_t>(f) + k;
       // |u × w| is 2·area for every corner of the face; atan2 stays accurate near 0 and π.
       g.cornerAngle[c] = std::atan2(twiceArea, d);
-      g.cornerCot[c] = std::clamp(d / std::max(twiceArea, areaFloor), -kCotClamp, kCotClamp);
+      // A degenerate face has no meaningful cotangents: it gets zero weight rather than ±clamp,
+      // which would make the Laplacian (and an explicit step) blow up around it.
+      g.cornerCot[c] = degenerate ? 0.0 : std::clamp(d / std::max(twiceArea, areaFloor), -kCotClamp, kCotClamp);
       sqLen[(k + 1) % 3] = w.squaredNorm();  // edge t[k]–t[k+2] is opposite corner k+1
       obtuse[k] = d < 0;
     }
@@ -101,7 +104,7 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   g.minFaceArea = std::isfinite(minArea) ? minArea : 0.0;
 
   std::size_t zeroLengthEdges = 0;
-#pragma omp parallel for reduction(+ : zeroLengthEdges) schedule(static)
+#pragma omp parallel for reduction(+ : zeroLengthEdges) schedule(static) if (ne > kParallelGrain)
   for (int e = 0; e < ne; ++e) {
     const auto& ev = topo.edgeVertices(e);
     if ((p[ev[1]] - p[ev[0]]).norm() <= lengthFloor) ++zeroLengthEdges;
@@ -110,7 +113,7 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   }
 
   std::size_t zeroAreaVertices = 0, isolated = 0;
-#pragma omp parallel for reduction(+ : zeroAreaVertices, isolated) schedule(static)
+#pragma omp parallel for reduction(+ : zeroAreaVertices, isolated) schedule(static) if (nv > kParallelGrain)
   for (int v = 0; v < nv; ++v) {
     double area = 0, angles = 0;
     Vec3 normal = Vec3::Zero();

@@ -1,4 +1,5 @@
 #include <elastica/laplacian.h>
+#include <elastica/parallel.h>
 
 namespace elastica {
 namespace {
@@ -10,7 +11,7 @@ void gatherLaplacian(const Topology& topo, const Geometry& g, const std::vector<
                      Zero zero) {
   const int nv = topo.vertexCount();
   out.resize(nv);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
     T sum = zero();
     if (g.vertexArea[i] > 0) {

@@ -1,10 +1,9 @@
 #include <elastica/errors.h>
 #include <elastica/shapes.h>
+#include <elastica/subdivision.h>
 
 #include <cmath>
-#include <map>
 #include <string>
-#include <utility>
 
 namespace elastica::shapes {
 
@@ -18,26 +17,7 @@ TriMesh icosphere(double radius, int level) {
   m.faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
              {3, 8, 9},  {4, 9, 5},  {2, 4, 11},  {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
-  for (int l = 0; l < level; ++l) {
-    std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = midpoint.find(key);
-      if (it != midpoint.end()) return it->second;
-      m.positions.push_back(0.5 * (m.positions[a] + m.positions[b]));
-      return midpoint[key] = m.vertexCount() - 1;
-    };
-    std::vector<Face> next;
-    next.reserve(4 * m.faces.size());
-    for (const Face& f : m.faces) {
-      const int a = mid(f[0], f[1]), b = mid(f[1], f[2]), c = mid(f[2], f[0]);
-      next.push_back({f[0], a, c});
-      next.push_back({f[1], b, a});
-      next.push_back({f[2], c, b});
-      next.push_back({a, b, c});
-    }
-    m.faces = std::move(next);
-  }
+  for (int l = 0; l < level; ++l) subdivideMidpoint(m);
   for (Vec3& p : m.positions) p = radius * p.normalized();
   return m;
 }

@@ -39,7 +39,7 @@ struct Geometry {
   std::vector<double> faceArea;      ///< per face
   std::vector<Vec3> faceNormal;      ///< per face, unit (zero for degenerate faces)
   std::vector<double> cornerAngle;   ///< per corner 3f+k, radians
-  std::vector<double> cornerCot;     ///< per corner, clamped to ±1e3
+  std::vector<double> cornerCot;     ///< per corner, clamped to ±1e3; 0 in degenerate faces
   std::vector<double> cornerArea;    ///< per corner: the part of its face's area given to its vertex
   std::vector<double> edgeWeight;    ///< per edge: C_ij = ½(cot α_ij + cot β_ij)
   std::vector<double> vertexArea;    ///< per vertex: A_i (mixed or barycentric)

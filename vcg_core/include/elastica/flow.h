@@ -1,0 +1,108 @@
+// Options and results of the fairing flows (paper §2–3). One options struct and one enum serve
+// the three flows and, later, both integrators.
+#pragma once
+
+#include <elastica/curvature.h>
+#include <elastica/geometry.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace elastica {
+
+enum class FlowType {
+  /// F = −Δ_B H − 2H(H² − K) (paper eq. 1.5): gradient descent of ∫(k1² + k2²); converges to
+  /// elastica (Willmore) surfaces — round spheres, Clifford tori.
+  Elastica,
+  /// F = −Δ_B H (paper eq. 3.1): keeps the volume, converges to constant mean curvature.
+  LaplacianOfMeanCurvature,
+  /// P ← P − τ U0²(P), the equal-weight bi-umbrella (paper §3): shrinks, connectivity-dependent.
+  Bilaplacian,
+};
+
+/// How vertices on the mesh boundary behave.
+enum class BoundaryMode {
+  /// Boundary vertices and their neighbours stay put: position and tangent plane clamped (G¹).
+  Fixed,
+  /// Boundary vertices slide along the original boundary polyline, equalising boundary edges; the
+  /// rest of the mesh flows.
+  Slide,
+};
+
+/// Why a run stopped.
+enum class StopReason { Converged, MaxSteps, MaxSeconds, Cancelled };
+
+/// Progress of a run, given to FlowOptions::progress.
+struct FlowProgress {
+  int level = 0;          ///< subdivision level of the current stage (0 = input resolution)
+  long long step = 0;     ///< steps so far, all stages
+  double energy = 0;      ///< total curvature energy of the moving region
+  double lambda = 1;      ///< the paper's λ (1 unless H2KTreatment::PaperLambda)
+  double seconds = 0;     ///< wall time so far
+};
+
+struct FlowOptions {
+  FlowType flow = FlowType::Elastica;
+  VertexArea area = VertexArea::Mixed;
+  CurvatureOptions curvature;  ///< H² − K treatment (clamp by default, or the paper's λ)
+  BoundaryMode boundary = BoundaryMode::Fixed;
+
+  /// Tangential drift ε·T (paper eq. 2.5): area-weighted bi-umbrella, keeps triangles even.
+  bool tangentialDrift = true;
+  /// τ = stepFactor · A_min² (paper: 1/150; stable up to about 1/3 on icospheres).
+  double stepFactor = 1.0 / 150;
+  /// ε = driftFactor · A_min (paper: 12).
+  double driftFactor = 12;
+  /// Bilaplacian step (dimensionless: U0² scales like length, stable below 0.5).
+  double bilaplacianStep = 0.05;
+
+  /// Stop at the energy plateau: when the relative energy change per unit of normalised time
+  /// t / A² (A the moving region's area, so the measure depends on neither scale nor resolution)
+  /// falls below this. On a noisy 642-vertex sphere 0.05 leaves a radius spread under 0.5 %;
+  /// 0.02 took 4× the steps for a spread of 0.26 % (the last slow mode is a mesh redistribution
+  /// that changes E by ~1e-6 relative per 10,000 steps).
+  double energyTolerance = 0.05;
+  /// Subdivide (if levels remain) when the same rate falls below this (near steady state).
+  double subdivisionTolerance = 0.05;
+  /// Number of 1-to-4 subdivisions (coarse-to-fine, paper §2).
+  int subdivisionLevels = 0;
+  /// Stop subdividing once the mean edge length is at or below this (0: no target).
+  double targetEdgeLength = 0;
+
+  long long maxSteps = 2'000'000;  ///< over all stages
+  double maxSeconds = 0;           ///< wall-time limit; 0 means none
+  int checkInterval = 100;         ///< steps between energy-rate checks and safety checkpoints
+
+  /// Called at every check; return false to cancel (the mesh keeps its last good state).
+  std::function<bool(const FlowProgress&)> progress;
+};
+
+/// One stage of the coarse-to-fine schedule.
+struct FlowStage {
+  int level = 0;
+  int vertices = 0, faces = 0;
+  long long steps = 0;
+  double energy = 0;   ///< at the end of the stage
+  double seconds = 0;
+};
+
+/// One point of the energy history (every check).
+struct EnergySample {
+  long long step = 0;
+  double time = 0;     ///< flow time Σ τ (length⁴; for the bilaplacian, Σ of its dimensionless step)
+  double seconds = 0;  ///< wall time
+  double energy = 0;
+};
+
+struct FlowReport {
+  double energyInitial = 0, energyFinal = 0;
+  long long steps = 0;
+  double seconds = 0;
+  double minLambda = 1;
+  StopReason stop = StopReason::Converged;
+  std::vector<FlowStage> stages;
+  std::vector<EnergySample> history;
+};
+
+}  // namespace elastica

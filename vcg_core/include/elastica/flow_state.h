@@ -1,0 +1,69 @@
+// The state of a flow at one resolution: the mesh, its topology and vertex roles (built once per
+// connectivity), and the per-step caches (geometry, curvature, speeds) that a step reuses without
+// allocating. An integrator step reads the cached operators and moves the free vertices.
+#pragma once
+
+#include <elastica/boundary_slide.h>
+#include <elastica/constraints.h>
+#include <elastica/curvature.h>
+#include <elastica/flow.h>
+#include <elastica/geometry.h>
+#include <elastica/topology.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace elastica {
+
+class FlowState {
+ public:
+  /// `faceSelected`: one byte per face, or empty for all faces. `slider` (Slide mode) must outlive
+  /// the state. @throws InvalidInputError on bad connectivity.
+  FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected, const FlowOptions& opt,
+            BoundarySlider* slider);
+
+  const TriMesh& mesh() const { return mesh_; }
+  const Topology& topology() const { return topo_; }
+  const VertexRoles& roles() const { return roles_; }
+  /// Replaces the positions (e.g. to roll back to a checkpoint).
+  void setPositions(const std::vector<Vec3>& p);
+
+  /// Geometry, curvature and energy of the current positions; cached until they change.
+  void evaluate();
+  /// Total curvature energy of the active region (free vertices and ring 1).
+  double energy() { evaluate(); return energy_; }
+  double lambda() { evaluate(); return curv_.lambda; }
+  /// Area of the faces with a moving vertex: the length² scale of the energy-rate test.
+  double activeArea() { evaluate(); return activeArea_; }
+  /// Smallest non-degenerate face area in the moving region (the paper's A_k).
+  double activeMinFaceArea() { evaluate(); return activeMinArea_; }
+  const Geometry& geometry() { evaluate(); return geo_; }
+  const Curvature& curvature() { evaluate(); return curv_; }
+
+  /// One explicit step: paper eq. 2.3 for the elastica and Laplacian-of-H flows (with the
+  /// tangential drift if enabled), P ← P − τU0²(P) for the bilaplacian. Returns the flow time
+  /// advanced. @throws NumericalError if a position became non-finite (positions then undefined:
+  /// roll back); InvalidInputError if a sliver makes the explicit step vanish.
+  double explicitStep();
+
+ private:
+  double normalStep();
+  double bilaplacianStep();
+  void slideBoundary();
+  double checkedMinArea() const;
+
+  TriMesh mesh_;
+  FlowOptions opt_;
+  Topology topo_;
+  VertexRoles roles_;
+  BoundarySlider* slider_;
+  bool evaluated_ = false;
+
+  Geometry geo_;
+  Curvature curv_;
+  double energy_ = 0, activeArea_ = 0, activeMinArea_ = 0;
+  std::vector<Vec3> lp_, u_, drift_;
+  std::vector<double> lh_;
+};
+
+}  // namespace elastica
