@@ -47,12 +47,7 @@ void runCurvature(const CurvatureArgs& a) {
   const Curvature c = computeCurvature(topo, geo, mesh.positions, opt);
   const double energy = totalCurvatureEnergy(topo, geo, c);
 
-  storeCurvature(vm, a.lambdaFix ? c.Hflow : c.H, c.K);
-  vcg::tri::UpdateNormal<VcgMesh>::PerVertexNormalizedPerFace(vm);
-  io::PlyWriteOptions w;
-  w.binary = !a.ascii;
-  w.vertexQuality = w.vertexColor = w.curvature = true;
-  io::writePly(a.output, vm, w);
+  writeCurvaturePly(a.output, vm, a.lambdaFix ? c.Hflow : c.H, c.K, a.ascii, /*color=*/true);
 
   auto [hmin, hmax] = std::minmax_element(c.H.begin(), c.H.end());
   std::printf("%s: %s, %s, %s, Euler characteristic %d\n", a.input.c_str(), plural(mesh.vertexCount(), "vertex").c_str(),

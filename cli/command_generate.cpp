@@ -13,7 +13,8 @@ namespace {
 
 struct GenerateArgs {
   std::string shape, output;
-  double radius = 1, major = 3, minor = 1, spacing = 1;
+  double radius = 1, major = 3, minor = 1, spacing = 1, noise = 0;
+  unsigned seed = 1;
   int level = 4;
   std::vector<int> segments;
   bool ascii = false;
@@ -26,6 +27,7 @@ void runGenerate(const GenerateArgs& a) {
   if (a.shape == "icosphere") mesh = shapes::icosphere(a.radius, a.level);
   else if (a.shape == "torus") mesh = shapes::torus(a.major, a.minor, seg(0, 64), seg(1, 32));
   else mesh = shapes::grid(seg(0, 10), seg(1, 10), a.spacing);
+  if (a.noise > 0) shapes::addRadialNoise(mesh, a.noise, a.seed);
   VcgMesh vm;
   fromTriMesh(mesh, vm);
   io::PlyWriteOptions w;
@@ -54,6 +56,10 @@ void addGenerateCommand(CLI::App& app) {
       ->delimiter(',')
       ->expected(1, 2);
   cmd->add_option("--spacing", args->spacing, "grid spacing")->capture_default_str();
+  cmd->add_option("--noise", args->noise,
+                  "move each vertex radially from the origin by a random factor in [1-A, 1+A] (e.g. 0.05)")
+      ->check(CLI::Range(0.0, 0.9));
+  cmd->add_option("--seed", args->seed, "random seed for --noise")->capture_default_str();
   cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
   cmd->callback([args] { runGenerate(*args); });
 }

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "elastica 0.1.0");
   elastica::cli::addCurvatureCommand(app);
+  elastica::cli::addFairCommand(app);
   elastica::cli::addGenerateCommand(app);
 
   try {

@@ -1,5 +1,7 @@
 #include "mesh_files.h"
 
+#include <elastica/vcg_adapter.h>
+
 #include <iostream>
 
 namespace elastica::cli {
@@ -9,6 +11,16 @@ std::string plural(std::size_t n, const std::string& word) {
   // vertex → vertices, the one irregular plural we print.
   const bool ex = word.size() > 2 && word.compare(word.size() - 2, 2, "ex") == 0;
   return std::to_string(n) + " " + (ex ? word.substr(0, word.size() - 2) + "ices" : word + "s");
+}
+
+void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& paperH,
+                       const std::vector<double>& K, bool ascii, bool color) {
+  storeCurvature(m, paperH, K);
+  io::PlyWriteOptions w;
+  w.binary = !ascii;
+  w.vertexQuality = w.curvature = true;
+  w.vertexColor = color;
+  io::writePly(path, m, w);
 }
 
 io::ReadReport loadMesh(const std::string& path, VcgMesh& m) {

@@ -6,12 +6,19 @@
 #include <elastica/types.h>
 
 #include <string>
+#include <vector>
 
 namespace elastica::cli {
 
 /// Reads `path` into `m`, telling on stderr what was repaired on the way (merged STL corners,
 /// triangulated polygons). @throws IoError.
 io::ReadReport loadMesh(const std::string& path, VcgMesh& m);
+
+/// Stores H (the core's sign; reported as +1/r on a sphere) and K on `m` and writes it as PLY with
+/// quality = H and the mean_curvature / gaussian_curvature attributes, plus the colour ramp by H
+/// if `color`. @throws IoError.
+void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& paperH,
+                       const std::vector<double>& K, bool ascii, bool color);
 
 /// Human-readable count, e.g. "1 face" / "3 faces".
 std::string plural(std::size_t n, const std::string& word);

@@ -1,7 +1,11 @@
 // The `elastica` program end to end: generated and bundled real meshes, output files, exit codes.
 #include "file_helpers.h"
 
+#include <elastica/curvature.h>
+#include <elastica/energy.h>
+#include <elastica/io/mesh_reader.h>
 #include <elastica/sign_convention.h>
+#include <elastica/vcg_adapter.h>
 
 #include <gtest/gtest.h>
 
@@ -10,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <fstream>
 #include <regex>
 #include <set>
 
@@ -130,6 +135,63 @@ TEST(Cli, FailuresExitNonZeroAndWriteNothing) {
   EXPECT_EQ(runElastica("curvature " + dir.file("g.ply")).exitCode, 2);  // -o missing
   EXPECT_EQ(runElastica("curvature " + dir.file("g.ply") + " -o x.ply --area voronoi").exitCode, 2);
   EXPECT_EQ(runElastica("frobnicate").exitCode, 2);
+}
+
+// The foundation of the flow issue's check: a held-out noisy sphere (5 % radial noise, a seed the
+// flow tests do not use) faired coarse to fine becomes round; E is recomputed independently from
+// the written file.
+TEST(Cli, FairTurnsNoisySphereRound) {
+  ScratchDir dir("cli-fair");
+  ASSERT_EQ(runElastica("generate icosphere --level 2 --noise 0.05 --seed 4242 -o " + dir.file("n.ply")).exitCode, 0);
+  const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") + " --subdivide 1 --report " +
+                                        dir.file("r.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  VcgMesh vm;
+  io::readMesh(dir.file("f.ply"), vm);
+  const TriMesh m = toTriMesh(vm);
+  ASSERT_EQ(m.vertexCount(), 642);
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& p : m.positions) c += p;
+  c /= m.vertexCount();
+  double lo = 1e300, hi = 0, mean = 0;
+  for (const Vec3& p : m.positions) {
+    const double r = (p - c).norm();
+    lo = std::min(lo, r), hi = std::max(hi, r), mean += r / m.vertexCount();
+  }
+  EXPECT_LT((hi - lo) / mean, 0.005);
+  const Topology t(m.vertexCount(), m.faces);
+  const Geometry g = computeGeometry(t, m.positions);
+  const double e = totalCurvatureEnergy(t, g, computeCurvature(t, g, m.positions));
+  EXPECT_NEAR(e, 8 * M_PI, 0.02 * 8 * M_PI);
+
+  std::ifstream in(dir.file("r.json"));
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* key : {"\"energy_initial\"", "\"energy_final\"", "\"steps\"", "\"seconds\"", "\"stages\"",
+                          "\"min_lambda\"", "\"energy_history\"", "\"stop\": \"converged\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key;
+}
+
+TEST(Cli, FairOptionsAndFailures) {
+  ScratchDir dir("cli-fair-opts");
+  ASSERT_EQ(runElastica("generate icosphere --level 2 --noise 0.05 -o " + dir.file("n.ply")).exitCode, 0);
+  for (const char* flow : {"elastica", "lmc", "bilaplacian"}) {
+    const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") + " --max-steps 300 --flow " +
+                                          flow + " --h2k lambda --no-tangential --color-by-mean-curvature --ascii");
+    EXPECT_EQ(run.exitCode, 0) << run.output;
+    EXPECT_NE(run.output.find("300 steps"), std::string::npos) << run.output;
+    EXPECT_GE(test::readAsciiPly(dir.file("f.ply")).column("red"), 0);
+  }
+  CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --selected");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("no face selection"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("g.ply")));
+  EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --flow willmore").exitCode, 2);
+  EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor -1").exitCode, 2);
+  // An unstable step is caught: error, non-zero exit, no output.
+  run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor 3");
+  EXPECT_EQ(run.exitCode, 1);
+  EXPECT_NE(run.output.find("diverged"), std::string::npos) << run.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("g.ply")));
 }
 
 TEST(Cli, HelpForProgramAndSubcommands) {

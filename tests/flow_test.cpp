@@ -40,9 +40,7 @@ RadiusStats radii(const TriMesh& m) {
 
 // Each vertex moved radially by a uniform factor in [1 − a, 1 + a].
 TriMesh radialNoise(TriMesh m, double a, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> u(-a, a);
-  for (Vec3& p : m.positions) p *= 1 + u(rng);
+  shapes::addRadialNoise(m, a, seed);
   return m;
 }
 

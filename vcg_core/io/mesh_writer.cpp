@@ -1,88 +1,26 @@
 #include <elastica/errors.h>
+#include <elastica/io/atomic_file.h>
 #include <elastica/io/mesh_writer.h>
 
 #include <wrap/io_trimesh/export_ply.h>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
-
 namespace elastica::io {
-namespace fs = std::filesystem;
-
-namespace {
-
-fs::path parentOf(const std::string& path) {
-  const fs::path parent = fs::path(path).parent_path();
-  return parent.empty() ? fs::path(".") : parent;
-}
-
-// A temporary file beside the destination, removed unless committed.
-class TempFile {
- public:
-  explicit TempFile(const std::string& destination) : destination_(destination) {
-    std::string pattern = (parentOf(destination) / ("." + fs::path(destination).filename().string() + ".XXXXXX")).string();
-    const int fd = mkstemp(pattern.data());
-    if (fd < 0) throw IoError(destination + ": cannot create a temporary file beside it (" + std::strerror(errno) + ")");
-    // mkstemp creates the file 0600; give it the permissions a plain fopen would have.
-    const mode_t mask = umask(0);
-    umask(mask);
-    fchmod(fd, 0666 & ~mask);
-    close(fd);
-    path_ = pattern;
-  }
-  ~TempFile() {
-    if (!committed_) std::remove(path_.c_str());
-  }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-
-  const std::string& path() const { return path_; }
-  void commit() {
-    if (std::rename(path_.c_str(), destination_.c_str()) != 0)
-      throw IoError(destination_ + ": cannot replace it (" + std::strerror(errno) + ")");
-    committed_ = true;
-  }
-
- private:
-  std::string destination_, path_;
-  bool committed_ = false;
-};
-
-}  // namespace
-
-void checkOutputPath(const std::string& output, const std::string& input) {
-  if (output.empty()) throw IoError("output path is empty");
-  std::error_code ec;
-  if (fs::is_directory(output, ec)) throw IoError(output + ": is a directory, not an output file");
-  const fs::path dir = parentOf(output);
-  if (!fs::is_directory(dir, ec)) throw IoError(output + ": output directory '" + dir.string() + "' does not exist");
-  if (access(dir.c_str(), W_OK) != 0) throw IoError(output + ": output directory '" + dir.string() + "' is not writable");
-  if (!input.empty() && fs::exists(output, ec) && fs::equivalent(input, output, ec))
-    throw IoError(output + ": output would overwrite the input file; choose another name");
-}
 
 void writePly(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt) {
-  checkOutputPath(path);
-  namespace io = vcg::tri::io;
-  io::PlyInfo info;
-  info.mask = io::Mask::IOM_VERTCOORD | io::Mask::IOM_FACEINDEX;
-  if (opt.vertexQuality) info.mask |= io::Mask::IOM_VERTQUALITY;
-  if (opt.vertexColor) info.mask |= io::Mask::IOM_VERTCOLOR;
-  if (opt.vertexNormal) info.mask |= io::Mask::IOM_VERTNORMAL;
+  namespace vio = vcg::tri::io;
+  vio::PlyInfo info;
+  info.mask = vio::Mask::IOM_VERTCOORD | vio::Mask::IOM_FACEINDEX;
+  if (opt.vertexQuality) info.mask |= vio::Mask::IOM_VERTQUALITY;
+  if (opt.vertexColor) info.mask |= vio::Mask::IOM_VERTCOLOR;
+  if (opt.vertexNormal) info.mask |= vio::Mask::IOM_VERTNORMAL;
   if (opt.curvature) {
     info.AddPerVertexFloatAttribute("mean_curvature");
     info.AddPerVertexFloatAttribute("gaussian_curvature");
   }
-  TempFile tmp(path);
-  const int err = io::ExporterPLY<VcgMesh>::Save(m, tmp.path().c_str(), opt.binary, info);
-  if (err != 0) throw IoError(path + ": writing failed (" + io::ExporterPLY<VcgMesh>::ErrorMsg(err) + ")");
-  tmp.commit();
+  writeAtomically(path, [&](const std::string& tmp) {
+    const int err = vio::ExporterPLY<VcgMesh>::Save(m, tmp.c_str(), opt.binary, info);
+    if (err != 0) throw IoError(path + ": writing failed (" + vio::ExporterPLY<VcgMesh>::ErrorMsg(err) + ")");
+  });
 }
 
 }  // namespace elastica::io

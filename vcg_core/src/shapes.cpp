@@ -3,6 +3,7 @@
 #include <elastica/subdivision.h>
 
 #include <cmath>
+#include <random>
 #include <string>
 
 namespace elastica::shapes {
@@ -64,6 +65,13 @@ TriMesh grid(int nx, int ny, double spacing) {
     }
   }
   return m;
+}
+
+void addRadialNoise(TriMesh& mesh, double amplitude, unsigned seed) {
+  if (!(amplitude >= 0 && amplitude < 1)) throw InvalidInputError("addRadialNoise: need 0 <= amplitude < 1");
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-amplitude, amplitude);
+  for (Vec3& p : mesh.positions) p *= 1 + u(rng);
 }
 
 }  // namespace elastica::shapes

@@ -18,4 +18,8 @@ TriMesh torus(double R, double r, int nu, int nv);
 /// diagonals, normals +z. Has a boundary.
 TriMesh grid(int nx, int ny, double spacing = 1.0);
 
+/// Moves each vertex radially (from the origin) by a factor drawn uniformly from
+/// [1 − amplitude, 1 + amplitude], reproducibly for a given seed: the noisy spheres of the tests.
+void addRadialNoise(TriMesh& mesh, double amplitude, unsigned seed);
+
 }  // namespace elastica::shapes

@@ -1,0 +1,80 @@
+#include "flow_report.h"
+
+#include <elastica/errors.h>
+#include <elastica/io/atomic_file.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+
+namespace elastica::cli {
+namespace {
+
+std::atomic<bool> gInterrupted{false};
+bool gLineDrawn = false;
+
+extern "C" void onSigint(int) { gInterrupted = true; }
+
+}  // namespace
+
+const char* stopName(StopReason s) {
+  switch (s) {
+    case StopReason::Converged: return "converged";
+    case StopReason::MaxSteps: return "max_steps";
+    case StopReason::MaxSeconds: return "max_seconds";
+    case StopReason::Cancelled: return "cancelled";
+  }
+  return "unknown";
+}
+
+nlohmann::json toJson(const FlowReport& r) {
+  nlohmann::json j;
+  j["energy_initial"] = r.energyInitial;
+  j["energy_final"] = r.energyFinal;
+  j["steps"] = r.steps;
+  j["seconds"] = r.seconds;
+  j["stop"] = stopName(r.stop);
+  j["min_lambda"] = r.minLambda;
+  j["stages"] = nlohmann::json::array();
+  for (const FlowStage& s : r.stages)
+    j["stages"].push_back({{"level", s.level}, {"vertices", s.vertices}, {"faces", s.faces}, {"steps", s.steps},
+                           {"energy", s.energy}, {"seconds", s.seconds}});
+  j["energy_history"] = nlohmann::json::array();
+  for (const EnergySample& h : r.history)
+    j["energy_history"].push_back({{"step", h.step}, {"time", h.time}, {"seconds", h.seconds}, {"energy", h.energy}});
+  return j;
+}
+
+void writeJson(const std::string& path, const nlohmann::json& j) {
+  io::writeAtomically(path, [&](const std::string& tmp) {
+    std::ofstream out(tmp);
+    out << j.dump(2) << "\n";
+    if (!out) throw IoError(path + ": cannot write the report");
+  });
+}
+
+bool interrupted() { return gInterrupted; }
+
+std::function<bool(const FlowProgress&)> terminalProgress(const std::string& label) {
+  std::signal(SIGINT, onSigint);
+  const bool tty = isatty(STDERR_FILENO);
+  return [tty, label](const FlowProgress& p) {
+    if (tty) {
+      std::fprintf(stderr, "\r%s: level %d  step %lld  E %.6g  lambda %.3g  %.1f s   ", label.c_str(), p.level, p.step,
+                   p.energy, p.lambda, p.seconds);
+      std::fflush(stderr);
+      gLineDrawn = true;
+    }
+    return !gInterrupted;
+  };
+}
+
+void endProgressLine() {
+  if (gLineDrawn) std::fprintf(stderr, "\n");
+  gLineDrawn = false;
+}
+
+}  // namespace elastica::cli

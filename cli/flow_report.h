@@ -1,0 +1,31 @@
+// The JSON report of a flow run (--report), and the live progress line on a terminal.
+#pragma once
+
+#include <elastica/flow.h>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace elastica::cli {
+
+/// energy_initial, energy_final, steps, seconds, stop, min_lambda, stages[], energy_history[].
+nlohmann::json toJson(const FlowReport& r);
+
+/// Name of a stop reason as written in reports: converged, max_steps, max_seconds, cancelled.
+const char* stopName(StopReason s);
+
+/// Writes `j` to `path` atomically. @throws IoError.
+void writeJson(const std::string& path, const nlohmann::json& j);
+
+/// A progress callback that redraws one line on stderr when it is a terminal (quiet otherwise),
+/// and cancels the run after Ctrl-C.
+std::function<bool(const FlowProgress&)> terminalProgress(const std::string& label);
+
+/// Clears the progress line (if one was drawn).
+void endProgressLine();
+
+/// True once SIGINT was received (Ctrl-C); installing the handler is part of terminalProgress.
+bool interrupted();
+
+}  // namespace elastica::cli
