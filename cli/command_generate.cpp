@@ -4,6 +4,7 @@
 #include "mesh_files.h"
 
 #include <elastica/shapes.h>
+#include <elastica/subdivision.h>
 #include <elastica/vcg_adapter.h>
 
 #include <cstdio>
@@ -15,7 +16,7 @@ struct GenerateArgs {
   std::string shape, output;
   double radius = 1, major = 3, minor = 1, spacing = 1, noise = 0;
   unsigned seed = 1;
-  int level = 4;
+  int level = -1;  // shape's default
   std::vector<int> segments;
   bool ascii = false;
 };
@@ -24,8 +25,12 @@ void runGenerate(const GenerateArgs& a) {
   io::checkOutputPath(a.output);
   auto seg = [&](int k, int def) { return static_cast<int>(a.segments.size()) > k ? a.segments[k] : def; };
   TriMesh mesh;
-  if (a.shape == "icosphere") mesh = shapes::icosphere(a.radius, a.level);
+  if (a.shape == "icosphere") mesh = shapes::icosphere(a.radius, a.level < 0 ? 4 : a.level);
   else if (a.shape == "torus") mesh = shapes::torus(a.major, a.minor, seg(0, 64), seg(1, 32));
+  else if (a.shape == "frame") {
+    mesh = shapes::frameCage(seg(0, 2), seg(1, 1));
+    for (int l = 0; l < (a.level < 0 ? 1 : a.level); ++l) subdivideMidpoint(mesh);
+  }
   else mesh = shapes::grid(seg(0, 10), seg(1, 10), a.spacing);
   if (a.noise > 0) shapes::addRadialNoise(mesh, a.noise, a.seed);
   VcgMesh vm;
@@ -41,18 +46,20 @@ void runGenerate(const GenerateArgs& a) {
 
 void addGenerateCommand(CLI::App& app) {
   auto args = std::make_shared<GenerateArgs>();
-  CLI::App* cmd = app.add_subcommand("generate", "Write a procedural mesh: icosphere, torus or grid.");
-  cmd->add_option("shape", args->shape, "icosphere | torus | grid")
+  CLI::App* cmd = app.add_subcommand(
+      "generate", "Write a procedural mesh: icosphere, torus, grid, or frame (the paper's coarse tubular cage).");
+  cmd->add_option("shape", args->shape, "icosphere | torus | grid | frame")
       ->required()
-      ->check(CLI::IsMember({"icosphere", "torus", "grid"}));
+      ->check(CLI::IsMember({"icosphere", "torus", "grid", "frame"}));
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   cmd->add_option("--radius", args->radius, "icosphere radius")->capture_default_str();
-  cmd->add_option("--level", args->level, "icosphere subdivision level: 10*4^level+2 vertices")
-      ->capture_default_str();
+  cmd->add_option("--level", args->level,
+                  "1-to-4 subdivisions: icosphere 10*4^level+2 vertices (default 4); frame (default 1)")
+      ->check(CLI::Range(0, 8));
   cmd->add_option("--major", args->major, "torus: distance R of the tube's centre from the axis")
       ->capture_default_str();
   cmd->add_option("--minor", args->minor, "torus: tube radius r")->capture_default_str();
-  cmd->add_option("--segments", args->segments, "torus: U,V segments (64,32); grid: X,Y cells (10,10)")
+  cmd->add_option("--segments", args->segments, "torus: U,V segments (64,32); grid: X,Y cells (10,10); frame: X,Y windows (2,1)")
       ->delimiter(',')
       ->expected(1, 2);
   cmd->add_option("--spacing", args->spacing, "grid spacing")->capture_default_str();

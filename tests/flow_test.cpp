@@ -288,7 +288,7 @@ TEST(Flow, DivergenceRestoresTheLastGoodState) {
   opt.stepFactor = 2.0;
   opt.checkInterval = 10;
   EXPECT_THROW(fair(m, nullptr, opt), NumericalError);
-  // The restored state is one that passed the checks: finite, size within a factor 10.
+  // The restored state is one that passed the checks: finite, size within a factor 2 per check.
   for (const Vec3& p : m.positions) EXPECT_TRUE(p.allFinite());
   EXPECT_LT(meanEdgeLength(topo, m.positions), 10 * edge0);
 }

@@ -3,7 +3,9 @@
 #include <elastica/subdivision.h>
 
 #include <cmath>
+#include <map>
 #include <random>
+#include <set>
 #include <string>
 
 namespace elastica::shapes {
@@ -65,6 +67,52 @@ TriMesh grid(int nx, int ny, double spacing) {
     }
   }
   return m;
+}
+
+TriMesh voxelSurface(const std::vector<std::array<int, 3>>& cells) {
+  // Corners of each cube face, counter-clockwise seen from outside: +x, −x, +y, −y, +z, −z.
+  static const int kCorner[6][4][3] = {{{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}},
+                                       {{0, 0, 0}, {0, 0, 1}, {0, 1, 1}, {0, 1, 0}},
+                                       {{0, 1, 0}, {0, 1, 1}, {1, 1, 1}, {1, 1, 0}},
+                                       {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {0, 0, 1}},
+                                       {{0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+                                       {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}}};
+  static const int kNeighbour[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  std::set<std::array<int, 3>> occupied(cells.begin(), cells.end());
+  std::map<std::array<int, 3>, int> index;
+  TriMesh m;
+  auto vertex = [&](const std::array<int, 3>& q) {
+    auto [it, inserted] = index.try_emplace(q, m.vertexCount());
+    if (inserted) m.positions.emplace_back(q[0], q[1], q[2]);
+    return it->second;
+  };
+  for (const auto& c : occupied) {
+    for (int d = 0; d < 6; ++d) {
+      if (occupied.count({c[0] + kNeighbour[d][0], c[1] + kNeighbour[d][1], c[2] + kNeighbour[d][2]})) continue;
+      int v[4];
+      Vec3 centre = Vec3::Zero();
+      for (int k = 0; k < 4; ++k) {
+        v[k] = vertex({c[0] + kCorner[d][k][0], c[1] + kCorner[d][k][1], c[2] + kCorner[d][k][2]});
+        centre += 0.25 * m.positions[v[k]];
+      }
+      // Four triangles around the square's centre: no valence-3 corners (spike tips for the
+      // flow) and no diagonal that depends on orientation.
+      m.positions.push_back(centre);
+      const int ci = m.vertexCount() - 1;
+      for (int k = 0; k < 4; ++k) m.faces.push_back({v[k], v[(k + 1) % 4], ci});
+    }
+  }
+  return m;
+}
+
+TriMesh frameCage(int windowsX, int windowsY, int windowSize) {
+  if (windowsX < 1 || windowsY < 1 || windowSize < 1) throw InvalidInputError("frameCage: need at least one window of size >= 1");
+  const int period = windowSize + 1;
+  std::vector<std::array<int, 3>> cells;
+  for (int y = 0; y <= windowsY * period; ++y)
+    for (int x = 0; x <= windowsX * period; ++x)
+      if (x % period == 0 || y % period == 0) cells.push_back({x, y, 0});
+  return voxelSurface(cells);
 }
 
 void addRadialNoise(TriMesh& mesh, double amplitude, unsigned seed) {

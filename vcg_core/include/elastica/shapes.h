@@ -4,6 +4,9 @@
 
 #include <elastica/types.h>
 
+#include <array>
+#include <vector>
+
 namespace elastica::shapes {
 
 /// Icosahedron refined `level` times by 1-to-4 midpoint subdivision, vertices projected onto the
@@ -17,6 +20,17 @@ TriMesh torus(double R, double r, int nu, int nv);
 /// Flat (nx+1)×(ny+1) grid in the plane z = 0 with `spacing`, quads split along alternating
 /// diagonals, normals +z. Has a boundary.
 TriMesh grid(int nx, int ny, double spacing = 1.0);
+
+/// Closed surface of a union of unit cubes (voxels) `cells`, outward oriented, each square split
+/// into four triangles around its centre (no valence-3 spike tips). Cells must not touch along an edge or a corner only (that would make the
+/// surface non-manifold).
+TriMesh voxelSurface(const std::vector<std::array<int, 3>>& cells);
+
+/// The tubular cage of the paper's Figs. 1 and 5–7, made of square tubes one unit thick: a flat
+/// frame of unit cubes around windowsX × windowsY square windows of side `windowSize` (2 × 1
+/// windows: genus 2). Measured: with 1-unit windows the elastica flow pinches the holes and folds
+/// the mesh; 2-unit windows flow cleanly once the cage is subdivided once.
+TriMesh frameCage(int windowsX, int windowsY, int windowSize = 2);
 
 /// Moves each vertex radially (from the origin) by a factor drawn uniformly from
 /// [1 − amplitude, 1 + amplitude], reproducibly for a given seed: the noisy spheres of the tests.
