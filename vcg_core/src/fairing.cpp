@@ -12,7 +12,9 @@ namespace elastica {
 namespace {
 
 // An energy this many times its value at the start of a stage (and at least this many times 1),
-// or a mean edge length changing by kSizeJump between two checks, means the scheme went unstable.
+// a mean edge length changing by kSizeJump between two checks (an unstable explicit step grows
+// geometrically) or by kBlowUpFactor over a stage (a too-large step drifts the scale), means the
+// scheme failed.
 constexpr double kBlowUpFactor = 10;
 constexpr double kSizeJump = 2;
 
@@ -70,7 +72,8 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
       report.history.push_back({0, 0, 0, energy});
     }
     const double blowUp = kBlowUpFactor * std::max(std::abs(energy), 1.0);
-    double checkpointEdge = state.geometry().meanEdgeLength;
+    const double startEdge = state.geometry().meanEdgeLength;
+    double checkpointEdge = startEdge;
     std::vector<Vec3> checkpoint = state.mesh().positions;
     long long checkpointStep = report.steps;
     double lastEnergy = energy, lastTime = time;
@@ -106,9 +109,11 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
       // closed surface may legitimately drift in scale (a zero mode of E), but slowly: an unstable
       // explicit step grows geometrically, check after check.
       const double edge = state.geometry().meanEdgeLength;
-      const double edgeRatio = edge / checkpointEdge;
-      if (!(edgeRatio < kSizeJump && edgeRatio > 1 / kSizeJump))
-        diverged("the mean edge length changed by a factor " + fmt(edgeRatio) + " since the last check");
+      const double jump = edge / checkpointEdge, drift = edge / startEdge;
+      if (!(jump < kSizeJump && jump > 1 / kSizeJump))
+        diverged("the mean edge length changed by a factor " + fmt(jump) + " since the last check");
+      if (!(drift < kBlowUpFactor && drift > 1 / kBlowUpFactor))
+        diverged("the mean edge length changed by a factor " + fmt(drift) + " since the stage began");
       checkpointEdge = edge;
       checkpoint = state.mesh().positions;
       checkpointStep = report.steps;
