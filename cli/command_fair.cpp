@@ -50,10 +50,24 @@ void runFair(FairArgs& a) {
     if (count == 0) throw InvalidInputError(a.input + ": --selected, but no face is selected");
   }
 
+  auto describe = [&](nlohmann::json j) {
+    j["input"] = {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}};
+    j["flow"] = flowName(a.flow.flow);
+    return j;
+  };
   a.flow.progress = terminalProgress("fair");
   FlowReport report;
   try {
     report = fair(mesh, a.selected ? &selection : nullptr, a.flow);
+  } catch (const FlowDivergedError& e) {
+    endProgressLine();
+    // The mesh is not written, but the report tells how far the run got and why it stopped.
+    if (!a.report.empty()) {
+      nlohmann::json j = describe(toJson(e.report()));
+      j["error"] = e.what();
+      writeJson(a.report, j);
+    }
+    throw;
   } catch (...) {
     endProgressLine();
     throw;
@@ -78,10 +92,8 @@ void runFair(FairArgs& a) {
   std::printf("wrote %s\n", a.output.c_str());
 
   if (!a.report.empty()) {
-    nlohmann::json j = toJson(report);
-    j["input"] = {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}};
+    nlohmann::json j = describe(toJson(report));
     j["output"] = {{"file", a.output}, {"vertices", mesh.vertexCount()}, {"faces", mesh.faceCount()}};
-    j["flow"] = flowName(a.flow.flow);
     j["energy_output"] = totalCurvatureEnergy(topo, geo, curv);  // whole mesh, independent recomputation
     writeJson(a.report, j);
     std::printf("wrote %s\n", a.report.c_str());

@@ -26,6 +26,7 @@ const char* stopName(StopReason s) {
     case StopReason::MaxSteps: return "max_steps";
     case StopReason::MaxSeconds: return "max_seconds";
     case StopReason::Cancelled: return "cancelled";
+    case StopReason::Diverged: return "diverged";
   }
   return "unknown";
 }

@@ -12,7 +12,7 @@ namespace elastica::cli {
 /// energy_initial, energy_final, steps, seconds, stop, min_lambda, stages[], energy_history[].
 nlohmann::json toJson(const FlowReport& r);
 
-/// Name of a stop reason as written in reports: converged, max_steps, max_seconds, cancelled.
+/// Name of a stop reason as written in reports: converged, max_steps, max_seconds, cancelled, diverged.
 const char* stopName(StopReason s);
 
 /// Writes `j` to `path` atomically. @throws IoError.

@@ -188,10 +188,15 @@ TEST(Cli, FairOptionsAndFailures) {
   EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --flow willmore").exitCode, 2);
   EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor -1").exitCode, 2);
   // An unstable step is caught: error, non-zero exit, no output.
-  run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor 3");
+  run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor 3 --report " + dir.file("d.json"));
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.output.find("diverged"), std::string::npos) << run.output;
   EXPECT_FALSE(std::filesystem::exists(dir.file("g.ply")));
+  // The report is still written, and says why the run stopped.
+  std::ifstream in(dir.file("d.json"));
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(json.find("\"stop\": \"diverged\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"error\""), std::string::npos) << json;
 }
 
 TEST(Cli, HelpForProgramAndSubcommands) {

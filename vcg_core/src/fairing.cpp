@@ -85,9 +85,14 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
     auto diverged = [&](const std::string& what) {
       state.setPositions(checkpoint);
       mesh.positions = checkpoint;
-      throw NumericalError("fair: the flow diverged at step " + std::to_string(report.steps) + " (" + what +
-                           "); restored the state of step " + std::to_string(checkpointStep) +
-                           ". Try a smaller step factor.");
+      report.stop = StopReason::Diverged;
+      report.seconds = elapsed();
+      stage.seconds = report.seconds - stageStart;
+      report.stages.push_back(stage);
+      throw FlowDivergedError("fair: the flow diverged at step " + std::to_string(report.steps) + " (" + what +
+                                  "); restored the state of step " + std::to_string(checkpointStep) +
+                                  ". Try a smaller step factor.",
+                              report);
     };
 
     while (true) {

@@ -21,8 +21,9 @@ namespace elastica {
 ///
 /// @throws InvalidInputError if the options are invalid, nothing can move, or a sliver would make
 ///         the explicit step vanish; the mesh is then unchanged.
-/// @throws NumericalError if the flow diverges (non-finite positions or an energy blow-up); the
-///         mesh is then left in the last good state checked (at most checkInterval steps back).
+/// @throws FlowDivergedError (a NumericalError, carrying the report so far) if the flow diverges
+///         (non-finite positions, an energy blow-up, the mesh size running away); the mesh is then
+///         left in the last good state checked (at most checkInterval steps back).
 FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt);
 
 }  // namespace elastica

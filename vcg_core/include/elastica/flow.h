@@ -3,6 +3,7 @@
 #pragma once
 
 #include <elastica/curvature.h>
+#include <elastica/errors.h>
 #include <elastica/geometry.h>
 
 #include <functional>
@@ -31,7 +32,7 @@ enum class BoundaryMode {
 };
 
 /// Why a run stopped.
-enum class StopReason { Converged, MaxSteps, MaxSeconds, Cancelled };
+enum class StopReason { Converged, MaxSteps, MaxSeconds, Cancelled, Diverged };
 
 /// Progress of a run, given to FlowOptions::progress.
 struct FlowProgress {
@@ -103,6 +104,17 @@ struct FlowReport {
   StopReason stop = StopReason::Converged;
   std::vector<FlowStage> stages;
   std::vector<EnergySample> history;
+};
+
+/// Thrown when a flow diverges; carries the report of the run up to the failure
+/// (stop = StopReason::Diverged), so a caller can still write it.
+class FlowDivergedError : public NumericalError {
+ public:
+  FlowDivergedError(const std::string& what, FlowReport report) : NumericalError(what), report_(std::move(report)) {}
+  const FlowReport& report() const { return report_; }
+
+ private:
+  FlowReport report_;
 };
 
 }  // namespace elastica
