@@ -12,6 +12,10 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
   cmd.add_option("--flow", opt.flow,
                  "elastica (default: F = -Lap H - 2H(H^2-K)), lmc (F = -Lap H) or bilaplacian (P -= tau U0^2 P)")
       ->transform(CLI::CheckedTransformer(flows, CLI::ignore_case));
+  const std::map<std::string, Scheme> schemes{{"explicit", Scheme::Explicit}, {"semi-implicit", Scheme::SemiImplicit}};
+  cmd.add_option("--scheme", opt.scheme,
+                 "explicit (the paper's step, default) or semi-implicit (adaptive, implicit in the 4th-order part)")
+      ->transform(CLI::CheckedTransformer(schemes, CLI::ignore_case));
   cmd.add_option("--subdivide", opt.subdivisionLevels,
                  "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state")
       ->check(CLI::Range(0, 8));

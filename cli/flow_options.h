@@ -8,7 +8,7 @@
 
 namespace elastica::cli {
 
-/// Registers --flow, --subdivide, --target-edge, --max-steps, --max-seconds, --energy-tol,
+/// Registers --flow, --scheme, --subdivide, --target-edge, --max-steps, --max-seconds, --energy-tol,
 /// --no-tangential, --boundary, --h2k, --area and --step-factor on `cmd`, writing into `opt`.
 void addFlowOptions(CLI::App& cmd, FlowOptions& opt);
 

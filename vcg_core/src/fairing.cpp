@@ -3,8 +3,10 @@
 #include <elastica/flow_state.h>
 #include <elastica/subdivision.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <deque>
 #include <memory>
 #include <string>
 
@@ -17,17 +19,28 @@ namespace {
 // scheme failed.
 constexpr double kBlowUpFactor = 10;
 constexpr double kSizeJump = 2;
+// Semi-implicit step control (DESIGN.md §4): τ₀ = 0.05 ℓ⁴, ×1.5 on success, ×0.5 on rejection;
+// below 1e-12 ℓ⁴ no step can lower the energy any more: the flow is at its noise floor.
+constexpr double kInitialTau = 0.05, kGrow = 1.5, kShrink = 0.5, kSmallestTau = 1e-12;
+// Semi-implicit plateau: relative energy change over this many accepted steps. Subdivision is
+// triggered at 100× the final tolerance (near steady state is enough before refining).
+constexpr int kPlateauWindow = 10;
+constexpr double kSubdivisionPlateauFactor = 100;
 
 void validate(const FlowOptions& o) {
   auto bad = [](const std::string& what) { throw InvalidInputError("fair: " + what); };
   if (!(o.stepFactor > 0)) bad("stepFactor must be > 0");
   if (!(o.driftFactor >= 0)) bad("driftFactor must be >= 0");
   if (!(o.bilaplacianStep > 0 && o.bilaplacianStep < 0.5)) bad("bilaplacianStep must be in (0, 0.5)");
-  if (!(o.energyTolerance >= 0) || !(o.subdivisionTolerance >= 0)) bad("tolerances must be >= 0");
+  if (!(o.energyTolerance >= 0) || !(o.subdivisionTolerance >= 0) || !(o.plateauTolerance >= 0))
+    bad("tolerances must be >= 0");
   if (o.subdivisionLevels < 0 || o.subdivisionLevels > 8) bad("subdivisionLevels must be in [0, 8]");
   if (!(o.targetEdgeLength >= 0)) bad("targetEdgeLength must be >= 0");
   if (o.maxSteps < 0 || !(o.maxSeconds >= 0)) bad("maxSteps and maxSeconds must be >= 0");
   if (o.checkInterval < 1) bad("checkInterval must be >= 1");
+  if (o.driftPasses < 0) bad("driftPasses must be >= 0");
+  if (o.scheme == Scheme::SemiImplicit && o.flow == FlowType::Bilaplacian)
+    bad("the bilaplacian flow has the explicit scheme only");
 }
 
 std::string fmt(double x) {
@@ -36,13 +49,136 @@ std::string fmt(double x) {
   return buf;
 }
 
+// What one stage of the schedule shares with the whole run.
+struct Run {
+  const FlowOptions& opt;
+  FlowReport& report;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+  double time = 0;  // flow time
+  bool stopped = false;
+
+  double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  // Step and time limits; true if the run must stop.
+  bool limitReached() {
+    if (report.steps >= opt.maxSteps) report.stop = StopReason::MaxSteps;
+    else if (opt.maxSeconds > 0 && elapsed() >= opt.maxSeconds) report.stop = StopReason::MaxSeconds;
+    else return false;
+    return stopped = true;
+  }
+  // Progress callback; true if the caller cancelled.
+  bool cancelled(int level, double energy, double lambda) {
+    if (!opt.progress || opt.progress({level, report.steps, energy, lambda, elapsed()})) return false;
+    report.stop = StopReason::Cancelled;
+    return stopped = true;
+  }
+};
+
+// The paper's explicit scheme until the energy-rate plateau (`tolerance`) or a limit.
+void explicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance, double stageStart) {
+  const FlowOptions& opt = run.opt;
+  FlowReport& report = run.report;
+  double energy = state.energy();
+  const double blowUp = kBlowUpFactor * std::max(std::abs(energy), 1.0);
+  const double startEdge = state.geometry().meanEdgeLength;
+  double checkpointEdge = startEdge;
+  std::vector<Vec3> checkpoint = state.mesh().positions;
+  long long checkpointStep = report.steps;
+  double lastEnergy = energy, lastTime = run.time;
+  const double area0 = state.totalArea();
+
+  auto diverged = [&](const std::string& what) {
+    state.setPositions(checkpoint);
+    report.stop = StopReason::Diverged;
+    report.seconds = run.elapsed();
+    stage.seconds = report.seconds - stageStart;
+    report.stages.push_back(stage);
+    throw FlowDivergedError("fair: the flow diverged at step " + std::to_string(report.steps) + " (" + what +
+                                "); restored the state of step " + std::to_string(checkpointStep) +
+                                ". Try a smaller step factor.",
+                            report);
+  };
+
+  while (!run.limitReached()) {
+    try {
+      run.time += state.explicitStep();
+    } catch (const NumericalError& e) {
+      diverged(e.what());
+    }
+    ++report.steps;
+    ++stage.steps;
+    if (stage.steps % opt.checkInterval != 0) continue;
+
+    if (state.scaleIsFree()) state.normalizeArea(area0);
+    energy = state.energy();
+    if (!std::isfinite(energy)) diverged("non-finite energy");
+    if (energy > blowUp) diverged("energy rose from " + fmt(lastEnergy) + " to " + fmt(energy));
+    // E is scale-invariant, so an exploding mesh can keep a moderate E: watch its size too.
+    const double edge = state.geometry().meanEdgeLength;
+    const double jump = edge / checkpointEdge, drift = edge / startEdge;
+    if (!(jump < kSizeJump && jump > 1 / kSizeJump))
+      diverged("the mean edge length changed by a factor " + fmt(jump) + " since the last check");
+    if (!(drift < kBlowUpFactor && drift > 1 / kBlowUpFactor))
+      diverged("the mean edge length changed by a factor " + fmt(drift) + " since the stage began");
+    checkpointEdge = edge;
+    checkpoint = state.mesh().positions;
+    checkpointStep = report.steps;
+    report.minLambda = std::min(report.minLambda, state.lambda());
+    report.history.push_back({report.steps, run.time, run.elapsed(), energy});
+    if (run.cancelled(stage.level, energy, state.lambda())) return;
+    // Relative energy change per unit of normalised time t/A² (A the moving region's area):
+    // independent of the model's scale and of the step size.
+    const double area = state.activeArea();
+    const double dtHat = (run.time - lastTime) / (area * area);
+    const double rate = (lastEnergy - energy) / (std::max(std::abs(energy), 1.0) * dtHat);
+    if (std::abs(rate) < tolerance) return;
+    lastEnergy = energy;
+    lastTime = run.time;
+  }
+}
+
+// The semi-implicit scheme with adaptive τ until the energy plateau (no accepted step in the last
+// kPlateauWindow lowered E below what it was before them by more than `tolerance`, relative), no
+// step lowers E any more, or a limit.
+void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance) {
+  FlowReport& report = run.report;
+  const double ell = state.geometry().meanEdgeLength;
+  const double ell4 = ell * ell * ell * ell;
+  const double area0 = state.totalArea();
+  double tau = kInitialTau * ell4;
+  std::deque<double> window{state.energy()};
+  while (!run.limitReached()) {
+    std::string why;
+    ++report.steps;  // attempts count against maxSteps
+    if (!state.trySemiImplicitStep(tau, &why)) {
+      ++report.rejectedSteps;
+      tau *= kShrink;
+      if (tau < kSmallestTau * ell4) return;  // at the noise floor: nothing lowers E any more
+      continue;
+    }
+    // A large step moves smooth modes freely, including the scale, which E does not see.
+    if (state.scaleIsFree()) state.normalizeArea(area0);
+    ++stage.steps;
+    run.time += tau;
+    tau *= kGrow;
+    const double energy = state.energy();
+    report.minLambda = std::min(report.minLambda, state.lambda());
+    report.history.push_back({report.steps, run.time, run.elapsed(), energy});
+    if (run.cancelled(stage.level, energy, state.lambda())) return;
+    window.push_back(energy);
+    if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
+    const double before = window.front();
+    window.pop_front();
+    const double best = *std::min_element(window.begin(), window.end());
+    if (before - best <= tolerance * std::max(std::abs(energy), 1.0)) return;
+  }
+}
+
 }  // namespace
 
 FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt) {
   validate(opt);
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
+  FlowReport report;
+  Run run{opt, report};
 
   std::vector<std::uint8_t> selection = faceSelected ? *faceSelected : std::vector<std::uint8_t>{};
   if (!selection.empty() && selection.size() != mesh.faces.size())
@@ -52,9 +188,6 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
   if (opt.boundary == BoundaryMode::Slide)
     slider = std::make_unique<BoundarySlider>(Topology(mesh.vertexCount(), mesh.faces), mesh.positions);
 
-  FlowReport report;
-  double time = 0;
-  bool stopped = false;
   for (int level = 0;; ++level) {
     FlowState state(mesh, selection, opt, slider.get());
     if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
@@ -64,91 +197,38 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
     }
     const bool refineLater = level < opt.subdivisionLevels &&
                              (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
-    const double tolerance = refineLater ? opt.subdivisionTolerance : opt.energyTolerance;
-    const double stageStart = elapsed();
-    double energy = state.energy();
+    const double stageStart = run.elapsed();
     if (level == 0) {
-      report.energyInitial = energy;
-      report.history.push_back({0, 0, 0, energy});
+      report.energyInitial = state.energy();
+      report.history.push_back({0, 0, 0, report.energyInitial});
     }
-    const double blowUp = kBlowUpFactor * std::max(std::abs(energy), 1.0);
-    const double startEdge = state.geometry().meanEdgeLength;
-    double checkpointEdge = startEdge;
-    std::vector<Vec3> checkpoint = state.mesh().positions;
-    long long checkpointStep = report.steps;
-    double lastEnergy = energy, lastTime = time;
     FlowStage stage;
     stage.level = level;
     stage.vertices = state.mesh().vertexCount();
     stage.faces = state.mesh().faceCount();
-
-    auto diverged = [&](const std::string& what) {
-      state.setPositions(checkpoint);
-      mesh.positions = checkpoint;
-      report.stop = StopReason::Diverged;
-      report.seconds = elapsed();
-      stage.seconds = report.seconds - stageStart;
-      report.stages.push_back(stage);
-      throw FlowDivergedError("fair: the flow diverged at step " + std::to_string(report.steps) + " (" + what +
-                                  "); restored the state of step " + std::to_string(checkpointStep) +
-                                  ". Try a smaller step factor.",
-                              report);
-    };
-
-    while (true) {
-      if (report.steps >= opt.maxSteps) { report.stop = StopReason::MaxSteps; stopped = true; break; }
-      if (opt.maxSeconds > 0 && elapsed() >= opt.maxSeconds) { report.stop = StopReason::MaxSeconds; stopped = true; break; }
-      try {
-        time += state.explicitStep();
-      } catch (const NumericalError& e) {
-        diverged(e.what());
+    try {
+      if (opt.scheme == Scheme::Explicit) {
+        explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
+      } else {
+        const double tol = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
+        semiImplicitStage(state, run, stage, tol);
       }
-      ++report.steps;
-      ++stage.steps;
-      if (stage.steps % opt.checkInterval != 0) continue;
-
-      energy = state.energy();
-      if (!std::isfinite(energy)) diverged("non-finite energy");
-      if (energy > blowUp) diverged("energy rose from " + fmt(lastEnergy) + " to " + fmt(energy));
-      // E is scale-invariant, so an exploding mesh can keep a moderate E: watch its size too. A
-      // closed surface may legitimately drift in scale (a zero mode of E), but slowly: an unstable
-      // explicit step grows geometrically, check after check.
-      const double edge = state.geometry().meanEdgeLength;
-      const double jump = edge / checkpointEdge, drift = edge / startEdge;
-      if (!(jump < kSizeJump && jump > 1 / kSizeJump))
-        diverged("the mean edge length changed by a factor " + fmt(jump) + " since the last check");
-      if (!(drift < kBlowUpFactor && drift > 1 / kBlowUpFactor))
-        diverged("the mean edge length changed by a factor " + fmt(drift) + " since the stage began");
-      checkpointEdge = edge;
-      checkpoint = state.mesh().positions;
-      checkpointStep = report.steps;
-      report.minLambda = std::min(report.minLambda, state.lambda());
-      report.history.push_back({report.steps, time, elapsed(), energy});
-      if (opt.progress && !opt.progress({level, report.steps, energy, state.lambda(), elapsed()})) {
-        report.stop = StopReason::Cancelled;
-        stopped = true;
-        break;
-      }
-      // Relative energy change per unit of normalised time t/A² (A the moving region's area):
-      // independent of the model's scale and of the step size.
-      const double area = state.activeArea();
-      const double dtHat = (time - lastTime) / (area * area);
-      const double rate = (lastEnergy - energy) / (std::max(std::abs(energy), 1.0) * dtHat);
-      if (std::abs(rate) < tolerance) break;
-      lastEnergy = energy;
-      lastTime = time;
+    } catch (const FlowDivergedError&) {
+      mesh.positions = state.mesh().positions;  // the restored checkpoint
+      throw;
     }
     mesh.positions = state.mesh().positions;
     stage.energy = state.energy();
-    stage.seconds = elapsed() - stageStart;
+    stage.seconds = run.elapsed() - stageStart;
     report.stages.push_back(stage);
     report.energyFinal = stage.energy;
-    if (stopped || !refineLater) break;
+    if (run.stopped || !refineLater) break;
     subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
   }
   if (faceSelected && !faceSelected->empty()) *faceSelected = selection;
-  report.seconds = elapsed();
-  if (report.history.back().step != report.steps) report.history.push_back({report.steps, time, report.seconds, report.energyFinal});
+  report.seconds = run.elapsed();
+  if (report.history.back().step != report.steps)
+    report.history.push_back({report.steps, run.time, report.seconds, report.energyFinal});
   return report;
 }
 

@@ -5,6 +5,10 @@
 #include <elastica/laplacian.h>
 #include <elastica/tangential.h>
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -18,7 +22,18 @@ constexpr double kMinRelativeFaceArea = 1e-6;
 // Fraction of the way to the midpoint of its boundary neighbours that a sliding vertex moves per step.
 constexpr double kSlideRate = 0.1;
 
+// Semi-implicit acceptance: a vertex may move at most this fraction of its mean edge length...
+constexpr double kMaxJump = 0.5;
+// ...and the energy may not rise by more than this (relative): stricter stalls at the noise floor.
+constexpr double kEnergySlack = 1e-4;
+
 }  // namespace
+
+struct FlowState::SparseSolver {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  std::vector<Eigen::Triplet<double>> triplets;
+  bool analysed = false;
+};
 
 FlowState::FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected, const FlowOptions& opt,
                      BoundarySlider* slider)
@@ -28,6 +43,34 @@ FlowState::FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected
       roles_(assignRoles(topo_, &faceSelected, opt.boundary)),
       slider_(slider) {
   if (slider_ && roles_.slidingCount > 0) slider_->attach(topo_, mesh_.positions, roles_.sliding);
+  freeIndex_.assign(topo_.vertexCount(), -1);
+  int row = 0, used = 0;
+  for (int v = 0; v < topo_.vertexCount(); ++v) {
+    if (roles_.free[v]) freeIndex_[v] = row++;
+    used += !topo_.isIsolatedVertex(v);
+  }
+  scaleFree_ = opt.flow == FlowType::Elastica && topo_.boundaryEdgeCount() == 0 && roles_.freeCount == used;
+}
+
+double FlowState::totalArea() {
+  evaluate();
+  double a = 0;
+  for (double x : geo_.faceArea) a += x;
+  return a;
+}
+
+void FlowState::normalizeArea(double area) {
+  const double now = totalArea();
+  if (!(now > 0) || !(area > 0)) return;
+  const double s = std::sqrt(area / now);
+  Vec3 c = Vec3::Zero();
+  int n = 0;
+  for (int v = 0; v < topo_.vertexCount(); ++v)
+    if (!topo_.isIsolatedVertex(v)) c += mesh_.positions[v], ++n;
+  c /= std::max(n, 1);
+  for (int v = 0; v < topo_.vertexCount(); ++v)
+    if (!topo_.isIsolatedVertex(v)) mesh_.positions[v] = c + s * (mesh_.positions[v] - c);
+  evaluated_ = false;
 }
 
 void FlowState::setPositions(const std::vector<Vec3>& p) {
@@ -85,23 +128,32 @@ double FlowState::explicitStep() {
   return dt;
 }
 
+void FlowState::speed(std::vector<double>& F) {
+  cotanLaplacian(topo_, geo_, curv_.Hflow, lh_);
+  const bool elastica = opt_.flow == FlowType::Elastica;
+  const int nv = topo_.vertexCount();
+  F.assign(nv, 0.0);
+#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
+  for (int i = 0; i < nv; ++i) {
+    if (!roles_.free[i]) continue;
+    // Paper sign convention (H = −1/r on an outward sphere): F = −Δ_B H − 2H(H² − K) decreases E.
+    F[i] = -lh_[i] - (elastica ? 2 * curv_.Hflow[i] * curv_.g[i] : 0.0);
+  }
+}
+
 double FlowState::normalStep() {
   const double aMin = checkedMinArea();
   const double tau = opt_.stepFactor * aMin * aMin;  // paper: τ = A_min²/150
   const double eps = opt_.driftFactor * aMin;        // paper: ε = 12 A_min
-  cotanLaplacian(topo_, geo_, curv_.Hflow, lh_);
+  speed(speed_);
   if (opt_.tangentialDrift) tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, u_, drift_);
-  const bool elastica = opt_.flow == FlowType::Elastica;
   const int nv = topo_.vertexCount();
   bool finite = true;
 #pragma omp parallel for reduction(&& : finite) schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
     if (!roles_.free[i]) continue;
-    // Paper sign convention (H = −1/r on an outward sphere): F = −Δ_B H − 2H(H² − K) decreases E.
-    double F = -lh_[i];
-    if (elastica) F -= 2 * curv_.Hflow[i] * curv_.g[i];
     Vec3& p = mesh_.positions[i];
-    p += tau * F * geo_.vertexNormal[i];
+    p += tau * speed_[i] * geo_.vertexNormal[i];
     if (opt_.tangentialDrift) p += eps * drift_[i];
     finite = finite && p.allFinite();
   }
@@ -127,6 +179,94 @@ double FlowState::bilaplacianStep() {
 
 void FlowState::slideBoundary() {
   if (slider_ && roles_.slidingCount > 0) slider_->slide(topo_, mesh_.positions, roles_.sliding, kSlideRate);
+}
+
+bool FlowState::trySemiImplicitStep(double tau, std::string* why) {
+  auto reject = [&](const char* reason) {
+    mesh_.positions = saved_;
+    evaluated_ = false;
+    if (why) *why = reason;
+    return false;
+  };
+  evaluate();
+  speed(speed_);
+  const int nv = topo_.vertexCount(), n = roles_.freeCount;
+  if (!solver_) solver_ = std::make_shared<SparseSolver>();
+
+  // (M_ff + τ/2 · C_fa M_aa⁻¹ C_af) δ_f = τ M_ff F_f: to leading order F(P + δN) ≈ F − ½Δ_B²δ,
+  // so the stiff fourth-order part is taken at the new time and everything else is lagged.
+  auto& trip = solver_->triplets;
+  trip.clear();
+  std::vector<std::pair<int, double>> column;  // (row, C_ij) of the free vertices around active i
+  for (int i = 0; i < nv; ++i) {
+    if (!roles_.active[i] || !geo_.isRegular(i)) continue;
+    column.clear();
+    double diagonal = 0;
+    for (int k = topo_.ringBegin(i); k < topo_.ringEnd(i); ++k) {
+      const double w = geo_.edgeWeight[topo_.ringEdge(k)];
+      diagonal -= w;
+      const int r = freeIndex_[topo_.ringVertex(k)];
+      if (r >= 0) column.emplace_back(r, w);
+    }
+    if (freeIndex_[i] >= 0) column.emplace_back(freeIndex_[i], diagonal);
+    const double s = 0.5 * tau / geo_.vertexArea[i];
+    for (const auto& [r1, c1] : column)
+      for (const auto& [r2, c2] : column) trip.emplace_back(r1, r2, s * c1 * c2);
+  }
+  Eigen::VectorXd rhs(n);
+  for (int v = 0; v < nv; ++v) {
+    const int r = freeIndex_[v];
+    if (r < 0) continue;
+    trip.emplace_back(r, r, geo_.vertexArea[v]);
+    rhs[r] = tau * geo_.vertexArea[v] * speed_[v];
+  }
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(trip.begin(), trip.end());
+  if (!solver_->analysed) {
+    solver_->ldlt.analyzePattern(K);  // the pattern depends on the topology only
+    solver_->analysed = true;
+  }
+  solver_->ldlt.factorize(K);
+  saved_ = mesh_.positions;
+  if (solver_->ldlt.info() != Eigen::Success) return reject("factorisation failed");
+  const Eigen::VectorXd delta = solver_->ldlt.solve(rhs);
+
+  const double energyBefore = energy_;
+  faceNormalBefore_ = geo_.faceNormal;
+  for (int v = 0; v < nv; ++v) {
+    const int r = freeIndex_[v];
+    if (r < 0) continue;
+    if (!std::isfinite(delta[r])) return reject("non-finite displacement");
+    double ring = 0;
+    for (int k = topo_.ringBegin(v); k < topo_.ringEnd(v); ++k)
+      ring += (saved_[topo_.ringVertex(k)] - saved_[v]).norm();
+    if (std::abs(delta[r]) > kMaxJump * ring / std::max(1, topo_.valence(v))) return reject("a vertex jumped");
+    mesh_.positions[v] += delta[r] * geo_.vertexNormal[v];
+  }
+  evaluated_ = false;
+  evaluate();
+  if (!std::isfinite(energy_)) return reject("non-finite energy");
+  // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
+  if (opt_.flow == FlowType::Elastica && energy_ > energyBefore * (1 + kEnergySlack) + 1e-12)
+    return reject("the energy rose");
+  for (int f = 0; f < topo_.faceCount(); ++f)
+    if (roles_.activeFace[f] && geo_.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return reject("a face flipped");
+
+  for (int pass = 0; pass < opt_.driftPasses && opt_.tangentialDrift; ++pass) driftPass();
+  slideBoundary();
+  evaluated_ = false;
+  return true;
+}
+
+void FlowState::driftPass() {
+  evaluate();
+  const double eps = opt_.driftFactor * activeMinArea_;
+  tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, u_, drift_);
+  const int nv = topo_.vertexCount();
+#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
+  for (int i = 0; i < nv; ++i)
+    if (roles_.free[i]) mesh_.positions[i] += eps * drift_[i];
+  evaluated_ = false;
 }
 
 }  // namespace elastica

@@ -41,8 +41,14 @@ TriMesh torus(double R, double r, int nu, int nv) {
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {
       // (u, v) is a right-handed chart for the outward normal: ∂u × ∂v points outward.
-      m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      // Diagonals alternate (when nu and nv are even) so the triangulation has no preferred direction.
+      if ((i + j) % 2 == 0) {
+        m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      } else {
+        m.faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        m.faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
     }
   }
   return m;

@@ -22,6 +22,18 @@ enum class FlowType {
   Bilaplacian,
 };
 
+/// How a flow advances in time.
+enum class Scheme {
+  /// The paper's explicit Euler step, τ = stepFactor · A_min² (stable, but the number of steps
+  /// grows like the square of the vertex count).
+  Explicit,
+  /// Linearly implicit in the stiff fourth-order part (DESIGN.md §4; the paper's future work):
+  /// (M + τ/2 C M⁻¹ C) δ = τ M F for the normal displacement δ, everything else lagged; adaptive
+  /// τ, a step accepted only if the energy does not rise, no face flips and no vertex jumps.
+  /// Same fixed points as the explicit scheme (δ = 0 iff F = 0). Elastica and Laplacian of H.
+  SemiImplicit,
+};
+
 /// How vertices on the mesh boundary behave.
 enum class BoundaryMode {
   /// Boundary vertices and their neighbours stay put: position and tangent plane clamped (G¹).
@@ -45,6 +57,7 @@ struct FlowProgress {
 
 struct FlowOptions {
   FlowType flow = FlowType::Elastica;
+  Scheme scheme = Scheme::Explicit;
   VertexArea area = VertexArea::Mixed;
   CurvatureOptions curvature;  ///< H² − K treatment (clamp by default, or the paper's λ)
   BoundaryMode boundary = BoundaryMode::Fixed;
@@ -73,7 +86,12 @@ struct FlowOptions {
 
   long long maxSteps = 2'000'000;  ///< over all stages
   double maxSeconds = 0;           ///< wall-time limit; 0 means none
-  int checkInterval = 100;         ///< steps between energy-rate checks and safety checkpoints
+  int checkInterval = 100;         ///< explicit: steps between energy-rate checks and checkpoints
+
+  /// Semi-implicit: stop when E changed by less than this (relative) over the last 10 accepted steps.
+  double plateauTolerance = 1e-6;
+  /// Semi-implicit: tangential drift passes (ε = driftFactor · A_min each) after an accepted step.
+  int driftPasses = 2;
 
   /// Called at every check; return false to cancel (the mesh keeps its last good state).
   std::function<bool(const FlowProgress&)> progress;
@@ -98,7 +116,8 @@ struct EnergySample {
 
 struct FlowReport {
   double energyInitial = 0, energyFinal = 0;
-  long long steps = 0;
+  long long steps = 0;          ///< steps taken (semi-implicit: attempts, accepted or not)
+  long long rejectedSteps = 0;  ///< semi-implicit attempts rejected (τ halved)
   double seconds = 0;
   double minLambda = 1;
   StopReason stop = StopReason::Converged;

@@ -11,6 +11,8 @@
 #include <elastica/topology.h>
 
 #include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace elastica {
@@ -46,11 +48,27 @@ class FlowState {
   /// roll back); InvalidInputError if a sliver makes the explicit step vanish.
   double explicitStep();
 
+  /// True for a closed surface whose every vertex moves under the elastica flow: then nothing pins
+  /// its scale, a zero mode of E (E is scale-invariant), and long runs drift in size.
+  bool scaleIsFree() const { return scaleFree_; }
+  /// Rescales about the centroid to total area `area` (E unchanged). Used when scaleIsFree().
+  void normalizeArea(double area);
+  /// Total area of the mesh.
+  double totalArea();
+
+  /// One semi-implicit attempt with step `tau` (Scheme::SemiImplicit). On success the positions
+  /// move, tangential drift passes follow, and it returns true; otherwise the positions are
+  /// unchanged, `why` says what failed (energy rise, flipped face, jump, non-finite) and it returns
+  /// false.
+  bool trySemiImplicitStep(double tau, std::string* why);
+
  private:
   double normalStep();
   double bilaplacianStep();
   void slideBoundary();
   double checkedMinArea() const;
+  void speed(std::vector<double>& F);
+  void driftPass();
 
   TriMesh mesh_;
   FlowOptions opt_;
@@ -58,12 +76,17 @@ class FlowState {
   VertexRoles roles_;
   BoundarySlider* slider_;
   bool evaluated_ = false;
+  bool scaleFree_ = false;
 
   Geometry geo_;
   Curvature curv_;
   double energy_ = 0, activeArea_ = 0, activeMinArea_ = 0;
   std::vector<Vec3> lp_, u_, drift_;
-  std::vector<double> lh_;
+  std::vector<double> lh_, speed_, delta_;
+  std::vector<Vec3> saved_, faceNormalBefore_;
+  std::vector<int> freeIndex_;  // vertex → row of the semi-implicit system, or -1
+  struct SparseSolver;          // Eigen's factorisation, pattern analysed once per topology
+  std::shared_ptr<SparseSolver> solver_;
 };
 
 }  // namespace elastica
