@@ -23,6 +23,7 @@ extern "C" void onSigint(int) { gInterrupted = true; }
 const char* stopName(StopReason s) {
   switch (s) {
     case StopReason::Converged: return "converged";
+    case StopReason::Stalled: return "stalled";
     case StopReason::MaxSteps: return "max_steps";
     case StopReason::MaxSeconds: return "max_seconds";
     case StopReason::Cancelled: return "cancelled";
@@ -36,6 +37,7 @@ nlohmann::json toJson(const FlowReport& r) {
   j["energy_initial"] = r.energyInitial;
   j["energy_final"] = r.energyFinal;
   j["steps"] = r.steps;
+  j["rejected_steps"] = r.rejectedSteps;
   j["seconds"] = r.seconds;
   j["stop"] = stopName(r.stop);
   j["min_lambda"] = r.minLambda;

@@ -9,10 +9,12 @@
 
 namespace elastica::cli {
 
-/// energy_initial, energy_final, steps, seconds, stop, min_lambda, stages[], energy_history[].
+/// energy_initial, energy_final, steps, rejected_steps, seconds, stop, min_lambda, stages[],
+/// energy_history[].
 nlohmann::json toJson(const FlowReport& r);
 
-/// Name of a stop reason as written in reports: converged, max_steps, max_seconds, cancelled, diverged.
+/// Name of a stop reason as written in reports: converged, stalled, max_steps, max_seconds,
+/// cancelled, diverged.
 const char* stopName(StopReason s);
 
 /// Writes `j` to `path` atomically. @throws IoError.

@@ -152,7 +152,10 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
     if (!state.trySemiImplicitStep(tau, &why)) {
       ++report.rejectedSteps;
       tau *= kShrink;
-      if (tau < kSmallestTau * ell4) return;  // at the noise floor: nothing lowers E any more
+      if (tau < kSmallestTau * ell4) {  // nothing lowers E any more
+        report.stop = StopReason::Stalled;
+        return;
+      }
       continue;
     }
     // A large step moves smooth modes freely, including the scale, which E does not see.
@@ -223,6 +226,7 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
     report.stages.push_back(stage);
     report.energyFinal = stage.energy;
     if (run.stopped || !refineLater) break;
+    report.stop = StopReason::Converged;  // the next stage decides
     subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
   }
   if (faceSelected && !faceSelected->empty()) *faceSelected = selection;

@@ -44,7 +44,14 @@ enum class BoundaryMode {
 };
 
 /// Why a run stopped.
-enum class StopReason { Converged, MaxSteps, MaxSeconds, Cancelled, Diverged };
+enum class StopReason {
+  Converged,   ///< the energy plateau
+  Stalled,     ///< semi-implicit: no step size lowers the energy any more (a noise floor, or stuck)
+  MaxSteps,
+  MaxSeconds,
+  Cancelled,
+  Diverged,
+};
 
 /// Progress of a run, given to FlowOptions::progress.
 struct FlowProgress {
