@@ -27,6 +27,8 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
                  "stop when the relative energy change per unit of normalised time t/A^2 is below this")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  cmd.add_flag("--remesh", opt.flipEdges,
+               "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check");
   cmd.add_flag("--no-tangential{false}", opt.tangentialDrift, "disable the tangential drift that keeps triangles even");
   const std::map<std::string, BoundaryMode> boundaries{{"fixed", BoundaryMode::Fixed}, {"slide", BoundaryMode::Slide}};
   cmd.add_option("--boundary", opt.boundary,

@@ -9,7 +9,7 @@
 namespace elastica::cli {
 
 /// Registers --flow, --scheme, --subdivide, --target-edge, --max-steps, --max-seconds, --energy-tol,
-/// --no-tangential, --boundary, --h2k, --area and --step-factor on `cmd`, writing into `opt`.
+/// --remesh, --no-tangential, --boundary, --h2k, --area and --step-factor on `cmd`, writing into `opt`.
 void addFlowOptions(CLI::App& cmd, FlowOptions& opt);
 
 }  // namespace elastica::cli

@@ -2,6 +2,7 @@
 // round, tori move toward the Clifford torus, energy decreases, and the scheme is scale-covariant.
 #include "test_meshes.h"
 
+#include <elastica/edge_flips.h>
 #include <elastica/energy.h>
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
@@ -157,18 +158,25 @@ TEST(Flow, FixedVerticesAreBitIdentical) {
     c /= 3;
     selected[f] = std::abs(c.x() - 8) < 4 && std::abs(c.y() - 8) < 4;
   }
-  FlowOptions opt;
-  opt.maxSteps = 3000;
-  const FlowReport r = fair(m, &selected, opt);
-  EXPECT_LT(r.energyFinal, r.energyInitial);
-  int moved = 0;
-  for (int v = 0; v < m.vertexCount(); ++v) {
-    const Vec3& p = before.positions[v];
-    const bool inside = std::abs(p.x() - 8) < 3.5 && std::abs(p.y() - 8) < 3.5;
-    if (!inside) EXPECT_EQ(std::memcmp(m.positions[v].data(), p.data(), sizeof(Vec3)), 0) << "vertex " << v;
-    moved += m.positions[v] != p;
+  for (bool flips : {false, true}) {
+    m = before;
+    std::vector<std::uint8_t> sel = selected;
+    FlowOptions opt;
+    opt.maxSteps = 3000;
+    opt.flipEdges = flips;
+    const FlowReport r = fair(m, &sel, opt);
+    EXPECT_LT(r.energyFinal, r.energyInitial);
+    int moved = 0;
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      const Vec3& p = before.positions[v];
+      const bool inside = std::abs(p.x() - 8) < 3.5 && std::abs(p.y() - 8) < 3.5;
+      if (!inside) EXPECT_EQ(std::memcmp(m.positions[v].data(), p.data(), sizeof(Vec3)), 0) << "vertex " << v;
+      moved += m.positions[v] != p;
+    }
+    EXPECT_GT(moved, 20);
+    for (int f = 0; f < m.faceCount(); ++f)
+      if (!selected[f]) EXPECT_EQ(m.faces[f], before.faces[f]) << "face " << f;
   }
-  EXPECT_GT(moved, 20);
 }
 
 // With a fixed boundary, the boundary row and the next row never move (G¹ clamp).
@@ -215,6 +223,41 @@ TEST(Flow, SlidingBoundaryStaysOnTheBoundary) {
     }
   }
   EXPECT_GT(slid, 10);
+}
+
+// Dynamic connectivity: non-Delaunay edges among moving vertices are flipped; nothing else changes.
+TEST(EdgeFlips, MakeTheMovingRegionDelaunay) {
+  TriMesh m = shapes::grid(10, 10, 1.0);
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> u(-0.45, 0.45);
+  for (Vec3& p : m.positions) {
+    if (p.x() > 0 && p.x() < 10 && p.y() > 0 && p.y() < 10) p += Vec3(u(rng), u(rng), 0.1 * u(rng));
+  }
+  const TriMesh before = m;
+  const Topology t0(m.vertexCount(), m.faces);
+  std::vector<std::uint8_t> movable(m.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); ++v) movable[v] = m.positions[v].x() > 2.5 && m.positions[v].x() < 7.5;
+  const int flips = flipToDelaunay(m, movable);
+  EXPECT_GT(flips, 5);
+  EXPECT_EQ(m.positions, before.positions);
+  const Topology t(m.vertexCount(), m.faces);
+  EXPECT_EQ(t.edgeCount(), t0.edgeCount());
+  EXPECT_EQ(t.inconsistentEdgeCount(), 0);
+  const Geometry g = computeGeometry(t, m.positions);
+  for (int e = 0; e < t.edgeCount(); ++e) {
+    const auto& oc = t.edgeOppositeCorners(e);
+    if (oc[1] < 0) continue;
+    const int vs[4] = {t.edgeVertices(e)[0], t.edgeVertices(e)[1], m.faces[oc[0] / 3][oc[0] % 3], m.faces[oc[1] / 3][oc[1] % 3]};
+    bool allMovable = true;
+    for (int v : vs) allMovable = allMovable && movable[v];
+    if (allMovable) EXPECT_LE(g.cornerAngle[oc[0]] + g.cornerAngle[oc[1]], M_PI + 1e-6) << "edge " << e;
+  }
+  // Faces with a fixed vertex are untouched.
+  for (int f = 0; f < m.faceCount(); ++f) {
+    bool fixedVertex = false;
+    for (int v : before.faces[f]) fixedVertex = fixedVertex || !movable[v];
+    if (fixedVertex) EXPECT_EQ(m.faces[f], before.faces[f]) << f;
+  }
 }
 
 TEST(Subdivision, KeepsOldVerticesAndQuadruplesFaces) {

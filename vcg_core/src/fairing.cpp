@@ -109,6 +109,7 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
     if (stage.steps % opt.checkInterval != 0) continue;
 
     if (state.scaleIsFree()) state.normalizeArea(area0);
+    if (opt.flipEdges) state.flipEdges();
     energy = state.energy();
     if (!std::isfinite(energy)) diverged("non-finite energy");
     if (energy > blowUp) diverged("energy rose from " + fmt(lastEnergy) + " to " + fmt(energy));
@@ -160,6 +161,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
     }
     // A large step moves smooth modes freely, including the scale, which E does not see.
     if (state.scaleIsFree()) state.normalizeArea(area0);
+    if (run.opt.flipEdges) state.flipEdges();
     ++stage.steps;
     run.time += tau;
     tau *= kGrow;
@@ -217,10 +219,10 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
         semiImplicitStage(state, run, stage, tol);
       }
     } catch (const FlowDivergedError&) {
-      mesh.positions = state.mesh().positions;  // the restored checkpoint
+      mesh = state.mesh();  // the restored checkpoint (faces may have been flipped)
       throw;
     }
-    mesh.positions = state.mesh().positions;
+    mesh = state.mesh();
     stage.energy = state.energy();
     stage.seconds = run.elapsed() - stageStart;
     report.stages.push_back(stage);

@@ -1,3 +1,4 @@
+#include <elastica/edge_flips.h>
 #include <elastica/energy.h>
 #include <elastica/parallel.h>
 #include <elastica/errors.h>
@@ -39,9 +40,14 @@ FlowState::FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected
                      BoundarySlider* slider)
     : mesh_(std::move(mesh)),
       opt_(opt),
+      selection_(faceSelected),
       topo_(mesh_.vertexCount(), mesh_.faces),
-      roles_(assignRoles(topo_, &faceSelected, opt.boundary)),
       slider_(slider) {
+  buildConnectivity();
+}
+
+void FlowState::buildConnectivity() {
+  roles_ = assignRoles(topo_, &selection_, opt_.boundary);
   if (slider_ && roles_.slidingCount > 0) slider_->attach(topo_, mesh_.positions, roles_.sliding);
   freeIndex_.assign(topo_.vertexCount(), -1);
   int row = 0, used = 0;
@@ -49,7 +55,18 @@ FlowState::FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected
     if (roles_.free[v]) freeIndex_[v] = row++;
     used += !topo_.isIsolatedVertex(v);
   }
-  scaleFree_ = opt.flow == FlowType::Elastica && topo_.boundaryEdgeCount() == 0 && roles_.freeCount == used;
+  scaleFree_ = opt_.flow == FlowType::Elastica && topo_.boundaryEdgeCount() == 0 && roles_.freeCount == used;
+  solver_.reset();  // the sparsity pattern follows the connectivity
+  evaluated_ = false;
+}
+
+int FlowState::flipEdges() {
+  const int flips = flipToDelaunay(mesh_, roles_.free);
+  if (flips > 0) {
+    topo_ = Topology(mesh_.vertexCount(), mesh_.faces);
+    buildConnectivity();
+  }
+  return flips;
 }
 
 double FlowState::totalArea() {

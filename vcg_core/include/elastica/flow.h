@@ -69,6 +69,10 @@ struct FlowOptions {
   CurvatureOptions curvature;  ///< H² − K treatment (clamp by default, or the paper's λ)
   BoundaryMode boundary = BoundaryMode::Fixed;
 
+  /// Dynamic connectivity (the paper's future work [7]), lightly: at every check, flip the
+  /// non-Delaunay edges among moving vertices. Positions are untouched; faces change.
+  bool flipEdges = false;
+
   /// Tangential drift ε·T (paper eq. 2.5): area-weighted bi-umbrella, keeps triangles even.
   bool tangentialDrift = true;
   /// τ = stepFactor · A_min² (paper: 1/150; stable up to about 1/3 on icospheres).

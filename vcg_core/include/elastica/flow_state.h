@@ -56,6 +56,10 @@ class FlowState {
   /// Total area of the mesh.
   double totalArea();
 
+  /// Flips non-Delaunay edges among free vertices (edge_flips.h) and rebuilds the connectivity
+  /// caches. Returns the number of flips.
+  int flipEdges();
+
   /// One semi-implicit attempt with step `tau` (Scheme::SemiImplicit). On success the positions
   /// move, tangential drift passes follow, and it returns true; otherwise the positions are
   /// unchanged, `why` says what failed (energy rise, flipped face, jump, non-finite) and it returns
@@ -68,10 +72,12 @@ class FlowState {
   void slideBoundary();
   double checkedMinArea() const;
   void speed(std::vector<double>& F);
+  void buildConnectivity();
   void driftPass();
 
   TriMesh mesh_;
   FlowOptions opt_;
+  std::vector<std::uint8_t> selection_;
   Topology topo_;
   VertexRoles roles_;
   BoundarySlider* slider_;

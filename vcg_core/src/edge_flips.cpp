@@ -1,0 +1,54 @@
+#include <elastica/edge_flips.h>
+#include <elastica/topology.h>
+
+#include <algorithm>
+
+namespace elastica {
+namespace {
+
+// Flips beyond this much (radians) past π only: avoids flipping back and forth on cocircular quads.
+constexpr double kAngleSlack = 1e-6;
+
+double angleAt(const Vec3& apex, const Vec3& a, const Vec3& b) {
+  const Vec3 u = a - apex, w = b - apex;
+  return std::atan2(u.cross(w).norm(), u.dot(w));
+}
+
+}  // namespace
+
+int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int maxPasses) {
+  const auto& p = mesh.positions;
+  int total = 0;
+  for (int pass = 0; pass < maxPasses; ++pass) {
+    const Topology topo(mesh.vertexCount(), mesh.faces);
+    std::vector<std::uint8_t> touched(mesh.faces.size(), 0);
+    int flips = 0;
+    for (int e = 0; e < topo.edgeCount(); ++e) {
+      const auto& oc = topo.edgeOppositeCorners(e);
+      if (oc[1] < 0) continue;
+      const int f0 = oc[0] / 3, f1 = oc[1] / 3;
+      if (touched[f0] || touched[f1]) continue;
+      // f0 = (a, b, c) with c opposite the edge; f1 holds the edge as (b, a) with d opposite.
+      const int c = mesh.faces[f0][oc[0] % 3], d = mesh.faces[f1][oc[1] % 3];
+      const int a = mesh.faces[f0][(oc[0] % 3 + 1) % 3], b = mesh.faces[f0][(oc[0] % 3 + 2) % 3];
+      if (!movable[a] || !movable[b] || !movable[c] || !movable[d] || c == d) continue;
+      if (angleAt(p[c], p[a], p[b]) + angleAt(p[d], p[a], p[b]) <= M_PI + kAngleSlack) continue;
+      bool exists = false;
+      for (int k = topo.ringBegin(c); k < topo.ringEnd(c) && !exists; ++k) exists = topo.ringVertex(k) == d;
+      if (exists) continue;
+      // New faces (a, d, c) and (d, b, c): same orientation as the old pair, or no flip.
+      const Vec3 before = (p[b] - p[a]).cross(p[c] - p[a]) + (p[a] - p[b]).cross(p[d] - p[b]);
+      const Vec3 n1 = (p[d] - p[a]).cross(p[c] - p[a]), n2 = (p[b] - p[d]).cross(p[c] - p[d]);
+      if (n1.dot(before) <= 0 || n2.dot(before) <= 0) continue;
+      mesh.faces[f0] = {a, d, c};
+      mesh.faces[f1] = {d, b, c};
+      touched[f0] = touched[f1] = 1;
+      ++flips;
+    }
+    total += flips;
+    if (flips == 0) break;
+  }
+  return total;
+}
+
+}  // namespace elastica
