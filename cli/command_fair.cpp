@@ -38,6 +38,7 @@ void runFair(FairArgs& a) {
   VcgMesh vm;
   const io::ReadReport read = loadMesh(a.input, vm);
   TriMesh mesh = toTriMesh(vm);
+  const std::vector<Face> inputFaces = mesh.faces;
   const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
 
   std::vector<std::uint8_t> selection;
@@ -76,8 +77,8 @@ void runFair(FairArgs& a) {
   if (report.stop == StopReason::Cancelled && interrupted())
     throw Error("interrupted: nothing written");
 
-  // Keep the input's other attributes when the connectivity is unchanged.
-  if (mesh.faceCount() == inFaces) writePositions(vm, mesh.positions);
+  // Keep the input's other attributes when the connectivity is unchanged (no subdivision, no flips).
+  if (mesh.faces == inputFaces) writePositions(vm, mesh.positions);
   else fromTriMesh(mesh, vm);
   const Topology topo(mesh.vertexCount(), mesh.faces);
   const Geometry geo = computeGeometry(topo, mesh.positions, a.flow.area);
