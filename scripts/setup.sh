@@ -145,5 +145,6 @@ dpkg-source --no-check -x "$dsc" "$tree" >/dev/null || die "dpkg-source could no
 [[ -f "$tree/vcglib/vcg/complex/complex.h" && -f "$tree/src/common/interfaces.h" ]] \
   || die "unpacked tree $tree lacks vcglib/ or src/common/"
 touch "$stamp"
-rm -rf "$work"
+# dpkg-source leaves a copy of the upstream tarball beside the tree it unpacked.
+rm -rf "$work" "$cache"/meshlab_*.orig.tar.*
 log "MeshLab $version source tree ready: $tree"
