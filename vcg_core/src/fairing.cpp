@@ -65,9 +65,11 @@ struct Run {
     else return false;
     return stopped = true;
   }
-  // Progress callback; true if the caller cancelled.
-  bool cancelled(int level, double energy, double lambda) {
-    if (!opt.progress || opt.progress({level, report.steps, energy, lambda, elapsed()})) return false;
+  // Records a checked state (λ, energy history) and reports progress; true if the caller cancelled.
+  bool record(FlowState& state, int level, double energy) {
+    report.minLambda = std::min(report.minLambda, state.lambda());
+    report.history.push_back({report.steps, time, elapsed(), energy});
+    if (!opt.progress || opt.progress({level, report.steps, energy, state.lambda(), elapsed()})) return false;
     report.stop = StopReason::Cancelled;
     return stopped = true;
   }
@@ -84,7 +86,7 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
   std::vector<Vec3> checkpoint = state.mesh().positions;
   long long checkpointStep = report.steps;
   double lastEnergy = energy, lastTime = run.time;
-  const double area0 = state.totalArea();
+  const double area0 = state.activeArea();
 
   auto diverged = [&](const std::string& what) {
     state.setPositions(checkpoint);
@@ -108,8 +110,7 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
     ++stage.steps;
     if (stage.steps % opt.checkInterval != 0) continue;
 
-    if (state.scaleIsFree()) state.normalizeArea(area0);
-    if (opt.flipEdges) state.flipEdges();
+    state.maintain(area0);
     energy = state.energy();
     if (!std::isfinite(energy)) diverged("non-finite energy");
     if (energy > blowUp) diverged("energy rose from " + fmt(lastEnergy) + " to " + fmt(energy));
@@ -123,9 +124,7 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
     checkpointEdge = edge;
     checkpoint = state.mesh().positions;
     checkpointStep = report.steps;
-    report.minLambda = std::min(report.minLambda, state.lambda());
-    report.history.push_back({report.steps, run.time, run.elapsed(), energy});
-    if (run.cancelled(stage.level, energy, state.lambda())) return;
+    if (run.record(state, stage.level, energy)) return;
     // Relative energy change per unit of normalised time t/A² (A the moving region's area):
     // independent of the model's scale and of the step size.
     const double area = state.activeArea();
@@ -144,13 +143,12 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;
   const double ell4 = ell * ell * ell * ell;
-  const double area0 = state.totalArea();
+  const double area0 = state.activeArea();
   double tau = kInitialTau * ell4;
   std::deque<double> window{state.energy()};
   while (!run.limitReached()) {
-    std::string why;
     ++report.steps;  // attempts count against maxSteps
-    if (!state.trySemiImplicitStep(tau, &why)) {
+    if (!state.trySemiImplicitStep(tau)) {
       ++report.rejectedSteps;
       tau *= kShrink;
       if (tau < kSmallestTau * ell4) {  // nothing lowers E any more
@@ -160,15 +158,12 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
       continue;
     }
     // A large step moves smooth modes freely, including the scale, which E does not see.
-    if (state.scaleIsFree()) state.normalizeArea(area0);
-    if (run.opt.flipEdges) state.flipEdges();
+    state.maintain(area0);
     ++stage.steps;
     run.time += tau;
     tau *= kGrow;
     const double energy = state.energy();
-    report.minLambda = std::min(report.minLambda, state.lambda());
-    report.history.push_back({report.steps, run.time, run.elapsed(), energy});
-    if (run.cancelled(stage.level, energy, state.lambda())) return;
+    if (run.record(state, stage.level, energy)) return;
     window.push_back(energy);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
     const double before = window.front();

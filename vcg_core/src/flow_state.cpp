@@ -1,9 +1,9 @@
 #include <elastica/edge_flips.h>
 #include <elastica/energy.h>
-#include <elastica/parallel.h>
 #include <elastica/errors.h>
 #include <elastica/flow_state.h>
 #include <elastica/laplacian.h>
+#include <elastica/parallel.h>
 #include <elastica/tangential.h>
 
 #include <Eigen/Sparse>
@@ -60,24 +60,18 @@ void FlowState::buildConnectivity() {
   evaluated_ = false;
 }
 
-int FlowState::flipEdges() {
-  const int flips = flipToDelaunay(mesh_, roles_.free);
-  if (flips > 0) {
+void FlowState::maintain(double area) {
+  if (scaleFree_) normalizeArea(area);
+  if (opt_.flipEdges && flipToDelaunay(mesh_, roles_.free) > 0) {
     topo_ = Topology(mesh_.vertexCount(), mesh_.faces);
     buildConnectivity();
   }
-  return flips;
 }
 
-double FlowState::totalArea() {
-  evaluate();
-  double a = 0;
-  for (double x : geo_.faceArea) a += x;
-  return a;
-}
-
+// Rescales about the centroid to total area `area` (E is unchanged). Only for scale-free meshes,
+// where every face is active.
 void FlowState::normalizeArea(double area) {
-  const double now = totalArea();
+  const double now = activeArea();
   if (!(now > 0) || !(area > 0)) return;
   const double s = std::sqrt(area / now);
   Vec3 c = Vec3::Zero();
@@ -198,11 +192,10 @@ void FlowState::slideBoundary() {
   if (slider_ && roles_.slidingCount > 0) slider_->slide(topo_, mesh_.positions, roles_.sliding, kSlideRate);
 }
 
-bool FlowState::trySemiImplicitStep(double tau, std::string* why) {
-  auto reject = [&](const char* reason) {
+bool FlowState::trySemiImplicitStep(double tau) {
+  auto reject = [&] {
     mesh_.positions = saved_;
     evaluated_ = false;
-    if (why) *why = reason;
     return false;
   };
   evaluate();
@@ -245,7 +238,7 @@ bool FlowState::trySemiImplicitStep(double tau, std::string* why) {
   }
   solver_->ldlt.factorize(K);
   saved_ = mesh_.positions;
-  if (solver_->ldlt.info() != Eigen::Success) return reject("factorisation failed");
+  if (solver_->ldlt.info() != Eigen::Success) return reject();
   const Eigen::VectorXd delta = solver_->ldlt.solve(rhs);
 
   const double energyBefore = energy_;
@@ -253,21 +246,21 @@ bool FlowState::trySemiImplicitStep(double tau, std::string* why) {
   for (int v = 0; v < nv; ++v) {
     const int r = freeIndex_[v];
     if (r < 0) continue;
-    if (!std::isfinite(delta[r])) return reject("non-finite displacement");
+    if (!std::isfinite(delta[r])) return reject();
     double ring = 0;
     for (int k = topo_.ringBegin(v); k < topo_.ringEnd(v); ++k)
       ring += (saved_[topo_.ringVertex(k)] - saved_[v]).norm();
-    if (std::abs(delta[r]) > kMaxJump * ring / std::max(1, topo_.valence(v))) return reject("a vertex jumped");
+    if (std::abs(delta[r]) > kMaxJump * ring / std::max(1, topo_.valence(v))) return reject();
     mesh_.positions[v] += delta[r] * geo_.vertexNormal[v];
   }
   evaluated_ = false;
   evaluate();
-  if (!std::isfinite(energy_)) return reject("non-finite energy");
+  if (!std::isfinite(energy_)) return reject();
   // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
   if (opt_.flow == FlowType::Elastica && energy_ > energyBefore * (1 + kEnergySlack) + 1e-12)
-    return reject("the energy rose");
+    return reject();
   for (int f = 0; f < topo_.faceCount(); ++f)
-    if (roles_.activeFace[f] && geo_.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return reject("a face flipped");
+    if (roles_.activeFace[f] && geo_.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return reject();
 
   for (int pass = 0; pass < opt_.driftPasses && opt_.tangentialDrift; ++pass) driftPass();
   slideBoundary();

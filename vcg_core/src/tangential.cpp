@@ -1,5 +1,5 @@
-#include <elastica/tangential.h>
 #include <elastica/parallel.h>
+#include <elastica/tangential.h>
 
 namespace elastica {
 namespace {

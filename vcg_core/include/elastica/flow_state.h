@@ -12,7 +12,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <string>
 #include <vector>
 
 namespace elastica {
@@ -48,23 +47,16 @@ class FlowState {
   /// roll back); InvalidInputError if a sliver makes the explicit step vanish.
   double explicitStep();
 
-  /// True for a closed surface whose every vertex moves under the elastica flow: then nothing pins
-  /// its scale, a zero mode of E (E is scale-invariant), and long runs drift in size.
-  bool scaleIsFree() const { return scaleFree_; }
-  /// Rescales about the centroid to total area `area` (E unchanged). Used when scaleIsFree().
-  void normalizeArea(double area);
-  /// Total area of the mesh.
-  double totalArea();
-
-  /// Flips non-Delaunay edges among free vertices (edge_flips.h) and rebuilds the connectivity
-  /// caches. Returns the number of flips.
-  int flipEdges();
+  /// Between steps: keeps the total area at `area` when nothing pins the scale (a closed surface
+  /// whose every vertex moves under the elastica flow: E does not see the scale, and long runs
+  /// drift in size), and flips non-Delaunay edges if FlowOptions::flipEdges.
+  void maintain(double area);
 
   /// One semi-implicit attempt with step `tau` (Scheme::SemiImplicit). On success the positions
-  /// move, tangential drift passes follow, and it returns true; otherwise the positions are
-  /// unchanged, `why` says what failed (energy rise, flipped face, jump, non-finite) and it returns
-  /// false.
-  bool trySemiImplicitStep(double tau, std::string* why);
+  /// move, tangential drift passes follow, and it returns true; if the step fails (the energy
+  /// rises, a face flips, a vertex jumps, a value is non-finite) the positions are unchanged and it
+  /// returns false.
+  bool trySemiImplicitStep(double tau);
 
  private:
   double normalStep();
@@ -73,6 +65,7 @@ class FlowState {
   double checkedMinArea() const;
   void speed(std::vector<double>& F);
   void buildConnectivity();
+  void normalizeArea(double area);
   void driftPass();
 
   TriMesh mesh_;
