@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   elastica::cli::addCurvatureCommand(app);
   elastica::cli::addFairCommand(app);
   elastica::cli::addGenerateCommand(app);
+  elastica::cli::addRunCommand(app);
 
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback

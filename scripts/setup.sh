@@ -24,6 +24,9 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev                        # tests and benchmarks
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev    # the MeshLab plugin and its integration tests
   xvfb xauth                                           # headless MeshLab for the plugin tests
+  libtinyxml2-dev                                      # .mlx filter scripts (elastica run)
+  xdotool                                              # the plugin's GUI test finds MeshLab's dialog
+  imagemagick                                          # ... and screenshots it (import)
 )
 
 log() { printf 'setup: %s\n' "$*" >&2; }

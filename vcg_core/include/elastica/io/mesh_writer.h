@@ -14,6 +14,7 @@ struct PlyWriteOptions {
   bool vertexColor = false;   ///< write per-vertex colour
   bool vertexNormal = false;  ///< write per-vertex normals
   bool curvature = false;     ///< write the "mean_curvature" and "gaussian_curvature" attributes
+  bool faceFlags = false;     ///< write per-face flags (MeshLab's face selection)
 };
 
 /// Writes `m` to `path` atomically (temporary file + rename).

@@ -1,0 +1,52 @@
+// Running a filter: parameter values → core options → the core, on a TriMesh copy. The
+// vcglib-facing half (copying in and writing back) is in filter_apply.h; this half is plain C++,
+// so its numerics are the same whoever calls it (the MeshLab plugin or `elastica run`).
+#pragma once
+
+#include <elastica/curvature.h>
+#include <elastica/filters/filter_spec.h>
+#include <elastica/flow.h>
+#include <elastica/types.h>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace elastica::filters {
+
+/// Progress of a long filter: a percentage and a line of text. Returning false cancels.
+using Progress = std::function<bool(int percent, const std::string& what)>;
+
+/// The FlowOptions a "Discrete Elastica Fairing" parameter set stands for.
+/// @throws InvalidInputError naming the parameter if a value is out of range.
+FlowOptions fairingOptions(const ParamValues& v);
+
+/// What a fairing run produced (the input copy is not touched on failure).
+struct FairingResult {
+  TriMesh mesh;                          ///< the faired mesh (subdivided if asked)
+  std::vector<std::uint8_t> selection;   ///< the face selection, refined with the mesh (if one was given)
+  bool connectivityChanged = false;      ///< subdivided or flipped: write the whole mesh back
+  bool colorByMeanCurvature = false;
+  Curvature curvature;                   ///< of the result, when colorByMeanCurvature
+  std::vector<std::string> log;          ///< summary lines for the user
+};
+
+/// Fairs `mesh` as "Discrete Elastica Fairing" with values `v` (`selection`: one byte per face,
+/// used when the Selected parameter is on).
+/// @throws InvalidInputError (non-manifold or inconsistently oriented input, nothing selected,
+///         bad parameters, ...), NumericalError (the flow diverged), Error (cancelled).
+FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, const ParamValues& v,
+                         const Progress& progress);
+
+/// What "Discrete Elastica Curvature" computed.
+struct CurvatureResult {
+  std::vector<double> H;  ///< the core's sign (sign_convention.h); H/λ where the λ fix applied
+  std::vector<double> K;
+  std::vector<std::string> log;
+};
+
+/// @throws InvalidInputError (non-manifold edges, inconsistent orientation, bad parameters).
+CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v);
+
+}  // namespace elastica::filters

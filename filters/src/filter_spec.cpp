@@ -1,0 +1,155 @@
+#include <elastica/errors.h>
+#include <elastica/filters/filter_spec.h>
+#include <elastica/flow.h>
+
+namespace elastica::filters {
+namespace {
+
+const char* kReference =
+    "<br><br>See: <i>S. Yoshizawa, A. G. Belyaev</i>, <b>\"Fair Triangle Mesh Generation with Discrete "
+    "Elastica\"</b>, Geometric Modeling and Processing 2002, pp. 119-123.";
+
+ParamSpec boolParam(std::string name, bool value, std::string label, std::string tooltip) {
+  return {std::move(name), ParamType::Bool, value ? 1.0 : 0.0, {}, std::move(label), std::move(tooltip)};
+}
+ParamSpec intParam(std::string name, int value, std::string label, std::string tooltip) {
+  return {std::move(name), ParamType::Int, double(value), {}, std::move(label), std::move(tooltip)};
+}
+ParamSpec floatParam(std::string name, float value, std::string label, std::string tooltip) {
+  return {std::move(name), ParamType::Float, double(value), {}, std::move(label), std::move(tooltip)};
+}
+ParamSpec enumParam(std::string name, int value, std::vector<std::string> values, std::string label,
+                    std::string tooltip) {
+  return {std::move(name), ParamType::Enum, double(value), std::move(values), std::move(label), std::move(tooltip)};
+}
+
+// The flow and scheme choices, shared by every filter that runs a flow (index order is the .mlx
+// value: append only).
+ParamSpec flowParam() {
+  return enumParam("flow", 0, {"Elastica", "Laplacian of mean curvature", "Bilaplacian"}, "Flow",
+                   "Elastica: F = -Lap H - 2H(H^2-K), converges to elastica (Willmore) surfaces such as round "
+                   "spheres. Laplacian of mean curvature: F = -Lap H, keeps the volume, converges to constant mean "
+                   "curvature. Bilaplacian: the equal-weight bi-umbrella, the paper's comparison (shrinks).");
+}
+ParamSpec schemeParam() {
+  return enumParam("scheme", 0, {"Explicit", "Semi-implicit"}, "Time integration",
+                   "Explicit: the paper's step tau = A_min^2/150 (the number of steps grows like the square of "
+                   "the vertex count). Semi-implicit: implicit in the fourth-order part, adaptive step, far fewer "
+                   "steps (Elastica and Laplacian of mean curvature only).");
+}
+ParamSpec maxStepsParam() {
+  return intParam("maxSteps", int(FlowOptions{}.maxSteps), "Maximum steps",
+                  "Upper bound on the number of steps over all stages; the flow normally stops earlier, at the "
+                  "energy plateau.");
+}
+
+FilterSpec fairing(const MeshFacts& mesh) {
+  FilterSpec s;
+  s.id = FilterId::Fairing;
+  s.name = "Discrete Elastica Fairing";
+  s.info = std::string(
+               "Fairs the mesh with the discrete elastica flow: every vertex moves along its normal with speed "
+               "F = -&Delta;<sub>B</sub>H - 2H(H<sup>2</sup> - K), computed with the cotangent Laplace-Beltrami "
+               "operator and the angle-deficit Gaussian curvature, which is the gradient descent of the total "
+               "curvature &int;(k<sub>1</sub><sup>2</sup> + k<sub>2</sub><sup>2</sup>) dA, while a tangential "
+               "drift keeps the triangles even. Optionally the mesh is refined coarse to fine (1-to-4 "
+               "subdivision each time the flow is near steady state); with a fixed boundary, the boundary and "
+               "the next ring of vertices stay put so that position and tangent plane are kept.") +
+           kReference;
+  s.params = {
+      flowParam(),
+      schemeParam(),
+      maxStepsParam(),
+      intParam("subdivisionLevels", 0, "Subdivision levels",
+               "Coarse to fine: how many times the mesh is split 1-to-4 at edge midpoints, each time when the "
+               "flow is near steady state (each level has four times the faces)."),
+      floatParam("energyTolerance", float(FlowOptions{}.energyTolerance), "Energy tolerance",
+                 "Stop when the relative change of the total curvature energy per unit of normalised time falls "
+                 "below this (independent of scale and resolution; smaller is rounder and slower)."),
+      boolParam("tangentialDrift", true, "Tangential drift",
+                "Move vertices tangentially (area-weighted bi-umbrella, paper eq. 2.5) to keep triangles even."),
+      enumParam("boundary", 0, {"Fixed", "Slide"}, "Boundary",
+                "Fixed: boundary vertices and their neighbours stay put (G1 clamp). Slide: boundary vertices "
+                "slide along the original boundary polyline."),
+      boolParam("Selected", mesh.selectedFaces > 0, "Affect only selected faces",
+                "Only vertices whose faces are all selected move; two rings around the selection stay fixed."),
+      boolParam("colorByMeanCurvature", false, "Colour by mean curvature",
+                "Afterwards store the mean curvature H (+1/r on a sphere) as vertex quality and colour the "
+                "vertices by it (red low, blue high)."),
+  };
+  return s;
+}
+
+FilterSpec curvature() {
+  FilterSpec s;
+  s.id = FilterId::Curvature;
+  s.name = "Discrete Elastica Curvature";
+  s.info = std::string(
+               "Computes the discrete curvatures the elastica flow uses: the mean curvature H from the "
+               "cotangent Laplace-Beltrami operator (&Delta;<sub>B</sub>P = 2HN, so H = +1/r on a sphere) "
+               "and the Gaussian curvature K from the angle deficit (2&pi; - &Sigma;&phi;)/A. H goes into "
+               "the vertex quality and colour (red low, blue high, over the 2-98 % range), and both H and K "
+               "into the per-vertex attributes mean_curvature and gaussian_curvature.") +
+           kReference;
+  s.params = {
+      boolParam("lambdaFix", false, "Paper's lambda fix",
+                "Where H^2 < K (impossible on smooth surfaces, common on meshes), rescale H by the paper's "
+                "lambda (guarded: lambda >= 0.5)."),
+      enumParam("area", 0, {"Mixed", "Barycentric"}, "Vertex area",
+                "Mixed: Meyer et al.'s mixed Voronoi area (H and K converge under refinement). Barycentric: the "
+                "paper's A/3 (H off by up to ~15 % at irregular vertices)."),
+  };
+  return s;
+}
+
+}  // namespace
+
+const char* richTypeName(ParamType t) {
+  switch (t) {
+    case ParamType::Bool: return "RichBool";
+    case ParamType::Int: return "RichInt";
+    case ParamType::Float: return "RichFloat";
+    case ParamType::Enum: return "RichEnum";
+  }
+  return "?";
+}
+
+const ParamSpec* FilterSpec::param(const std::string& n) const {
+  for (const ParamSpec& p : params)
+    if (p.name == n) return &p;
+  return nullptr;
+}
+
+std::vector<FilterSpec> allFilters(const MeshFacts& mesh) { return {fairing(mesh), curvature()}; }
+
+FilterSpec filterSpec(FilterId id, const MeshFacts& mesh) {
+  switch (id) {
+    case FilterId::Fairing: return fairing(mesh);
+    case FilterId::Curvature: return curvature();
+  }
+  throw InvalidInputError("filterSpec: unknown filter id " + std::to_string(int(id)));
+}
+
+std::optional<FilterId> findFilter(const std::string& name) {
+  for (const FilterSpec& s : allFilters({}))
+    if (s.name == name) return s.id;
+  return std::nullopt;
+}
+
+ParamValues ParamValues::defaults(const FilterSpec& spec) {
+  ParamValues v;
+  for (const ParamSpec& p : spec.params) v.set(p.name, p.defaultValue);
+  return v;
+}
+
+double ParamValues::get(const std::string& name) const {
+  auto it = values_.find(name);
+  if (it == values_.end()) throw InvalidInputError("parameter '" + name + "' has no value");
+  return it->second;
+}
+bool ParamValues::getBool(const std::string& name) const { return get(name) != 0; }
+int ParamValues::getInt(const std::string& name) const { return static_cast<int>(get(name)); }
+double ParamValues::getFloat(const std::string& name) const { return get(name); }
+int ParamValues::getEnum(const std::string& name) const { return static_cast<int>(get(name)); }
+
+}  // namespace elastica::filters
