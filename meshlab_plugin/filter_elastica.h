@@ -25,6 +25,7 @@ class FilterElasticaPlugin : public QObject, public MeshFilterInterface {
   int getPreConditions(QAction* action) const override;
   int postCondition(QAction* action) const override;
   FILTER_ARITY filterArity(QAction* action) const override;
+  using MeshFilterInterface::initParameterSet;  // keep the MeshDocument overload visible
   void initParameterSet(QAction* action, MeshModel& m, RichParameterList& params) override;
   /// Never throws: a failure sets errorMessage, logs it (meshlabserver prints only the log) and
   /// returns false with the mesh unchanged.

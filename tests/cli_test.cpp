@@ -1,4 +1,5 @@
 // The `elastica` program end to end: generated and bundled real meshes, output files, exit codes.
+#include "command_helpers.h"
 #include "file_helpers.h"
 
 #include <elastica/curvature.h>
@@ -23,21 +24,8 @@ using test::ScratchDir;
 
 namespace {
 
-struct CommandResult {
-  int exitCode;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult runElastica(const std::string& args) {
-  const std::string cmd = std::string(ELASTICA_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
-}
+using test::CommandResult;
+CommandResult runElastica(const std::string& args) { return test::runCommand(std::string(ELASTICA_EXE) + " " + args); }
 
 double printedEnergy(const std::string& out) {
   std::smatch m;

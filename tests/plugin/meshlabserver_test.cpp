@@ -1,0 +1,182 @@
+// Debian's real meshlabserver loads the freshly built plugin from a private prefix under the build
+// directory (nothing is installed into /usr) and runs .mlx scripts of each filter; its output must
+// match `elastica run` with the same script and input: same counts, positions within 1e-5 of the
+// bounding-box diagonal (MeshLab stores float; both compute in double on a copy). Runs under
+// `xvfb-run -a` (ctest does that): MeshLab needs an X display even for meshlabserver.
+#include "../command_helpers.h"
+#include "../file_helpers.h"
+
+#include <elastica/io/mesh_reader.h>
+#include <elastica/io/mesh_writer.h>
+#include <elastica/shapes.h>
+#include <elastica/vcg_adapter.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+namespace elastica {
+namespace {
+
+using test::CommandResult;
+CommandResult run(const std::string& command) { return test::runCommand(command); }
+std::string quote(const std::string& s) { return test::quoted(s); }
+
+const std::string kWork = PLUGIN_TEST_WORK_DIR;
+const std::string kPrefix = kWork + "/meshlab-prefix";
+
+
+double diagonal(const VcgMesh& m) {
+  Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
+  for (const auto& v : m.vert)
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v.cP()[k]), hi[k] = std::max(hi[k], v.cP()[k]);
+  return (hi - lo).norm();
+}
+
+double maxDistance(const VcgMesh& a, const VcgMesh& b) {
+  double d = 0;
+  for (size_t i = 0; i < a.vert.size() && i < b.vert.size(); ++i) d = std::max(d, (a.vert[i].cP() - b.vert[i].cP()).Norm());
+  return d;
+}
+
+// Largest |quality| of `a`, and the largest quality difference between `a` and `b`.
+std::pair<double, double> qualityRangeAndDifference(const VcgMesh& a, const VcgMesh& b) {
+  double qMax = 0, qDiff = 0;
+  for (size_t i = 0; i < a.vert.size() && i < b.vert.size(); ++i) {
+    qMax = std::max(qMax, std::abs(a.vert[i].cQ()));
+    qDiff = std::max(qDiff, std::abs(a.vert[i].cQ() - b.vert[i].cQ()));
+  }
+  return {qMax, qDiff};
+}
+
+// Writes a noisy level-2 icosphere, faces with z > 0 selected if `selectUpper`.
+void writeNoisySphere(const std::string& path, unsigned seed, bool selectUpper) {
+  TriMesh sphere = shapes::icosphere(1.0, 2);
+  shapes::addRadialNoise(sphere, 0.05, seed);
+  VcgMesh vm;
+  fromTriMesh(sphere, vm);
+  if (selectUpper)
+    for (auto& f : vm.face)
+      if (f.cP(0)[2] > 0 && f.cP(1)[2] > 0 && f.cP(2)[2] > 0) f.SetS();
+  io::PlyWriteOptions w;
+  w.faceFlags = selectUpper;
+  io::writePly(path, vm, w);
+}
+
+int selectedFaces(const VcgMesh& m) {
+  int n = 0;
+  for (const auto& f : m.face) n += f.IsS() ? 1 : 0;
+  return n;
+}
+
+class Meshlabserver : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    std::filesystem::create_directories(kWork);
+    const CommandResult r =
+        run(quote(PLUGIN_PREFIX_SCRIPT) + " --prefix " + quote(kPrefix) + " " + quote(PLUGIN_MODULE));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+  }
+  void SetUp() override { ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a (ctest does)"; }
+
+  // Runs `script` on `input` with meshlabserver and with `elastica run`; loads both outputs.
+  void runBoth(const std::string& input, const std::string& script, const std::string& name) {
+    mlOut = dir.file(name + "_meshlab.ply");
+    runOut = dir.file(name + "_run.ply");
+    ml = run(kPrefix + "/bin/meshlabserver -i " + quote(input) + " -o " + quote(mlOut) + " -m vc vq ff -s " +
+             quote(script));
+    ASSERT_EQ(ml.exitCode, 0) << ml.output;
+    ASSERT_TRUE(std::filesystem::exists(mlOut)) << ml.output;
+    el = run(quote(ELASTICA_EXE) + " run -i " + quote(input) + " -o " + quote(runOut) + " -s " + quote(script));
+    ASSERT_EQ(el.exitCode, 0) << el.output;
+    io::readMesh(mlOut, meshlab);
+    io::readMesh(runOut, ours);
+    ASSERT_EQ(meshlab.vn, ours.vn);
+    ASSERT_EQ(meshlab.fn, ours.fn);
+    for (int f = 0; f < meshlab.fn; ++f)
+      for (int k = 0; k < 3; ++k)
+        ASSERT_EQ(vcg::tri::Index(meshlab, meshlab.face[f].cV(k)), vcg::tri::Index(ours, ours.face[f].cV(k)));
+    relativeDifference = maxDistance(meshlab, ours) / diagonal(ours);
+    std::printf("[ %s ] meshlabserver vs elastica run: max position difference %.3g of the diagonal\n", name.c_str(),
+                relativeDifference);
+    EXPECT_LE(relativeDifference, 1e-5);
+  }
+
+  test::ScratchDir dir{"plugin-meshlabserver"};
+  std::string mlOut, runOut;
+  CommandResult ml, el;
+  VcgMesh meshlab, ours;
+  double relativeDifference = 0;
+};
+
+const std::string kBunny = std::string(ELASTICA_DATA_DIR) + "/bunny.ply";
+const std::string kScripts = PLUGIN_TEST_SCRIPTS_DIR;
+const std::string kExamples = PLUGIN_EXAMPLES_DIR;
+
+TEST_F(Meshlabserver, FairingBunnyMatchesElasticaRun) {
+  runBoth(kBunny, kScripts + "/fairing_explicit_2000_steps.mlx", "fairing");
+  EXPECT_NE(ml.output.find("Discrete Elastica Fairing: 1839 -> 1839 vertices, 2000 steps"), std::string::npos)
+      << ml.output;
+  // The filter did something: vertices moved by far more than the agreement tolerance.
+  VcgMesh input;
+  io::readMesh(kBunny, input);
+  EXPECT_GT(maxDistance(input, meshlab) / diagonal(input), 1e-3);
+  // colorByMeanCurvature: H as quality, the same in both.
+  const auto [qMax, qDiff] = qualityRangeAndDifference(ours, meshlab);
+  EXPECT_GT(qMax, 0);
+  EXPECT_LE(qDiff, 1e-3 * qMax);
+}
+
+// Selected faces only, semi-implicit, one subdivision: connectivity changes, the selection follows.
+TEST_F(Meshlabserver, SelectedSubdividedFairingMatchesElasticaRun) {
+  const std::string input = dir.file("noisy_selected.ply");
+  writeNoisySphere(input, 11, /*selectUpper=*/true);
+  VcgMesh in;
+  io::readMesh(input, in);
+  ASSERT_GT(selectedFaces(in), 0);
+
+  runBoth(input, kScripts + "/fairing_selected_semi_implicit_subdivided.mlx", "selected");
+  EXPECT_EQ(ours.fn, 4 * in.fn);
+  EXPECT_EQ(selectedFaces(ours), 4 * selectedFaces(in));
+  EXPECT_EQ(selectedFaces(meshlab), selectedFaces(ours));
+}
+
+TEST_F(Meshlabserver, CurvatureExampleMatchesElasticaRun) {
+  runBoth(kBunny, kExamples + "/curvature.mlx", "curvature");
+  EXPECT_EQ(relativeDifference, 0);  // positions untouched
+  for (int i = 0; i < ours.vn; ++i) EXPECT_EQ(ours.vert[i].cC(), meshlab.vert[i].cC()) << "vertex " << i;
+  const auto [qMax, qDiff] = qualityRangeAndDifference(ours, meshlab);
+  EXPECT_GT(qMax, 0);
+  EXPECT_LE(qDiff, 1e-5 * qMax);
+}
+
+// The shipped example lists every parameter (meshlabserver aborts otherwise) and runs to the
+// energy plateau; on a small noisy sphere that takes a second or two.
+TEST_F(Meshlabserver, FairingExampleRunsToConvergence) {
+  const std::string input = dir.file("noisy.ply");
+  writeNoisySphere(input, 3, /*selectUpper=*/false);
+  runBoth(input, kExamples + "/fairing.mlx", "example");
+  EXPECT_NE(ml.output.find("converged at the energy plateau"), std::string::npos) << ml.output;
+}
+
+// Unsuitable input: meshlabserver reports our message in its log, fails, and writes nothing.
+TEST_F(Meshlabserver, NonManifoldInputFailsWithMessage) {
+  TriMesh mesh = shapes::icosphere(1.0, 1);
+  mesh.positions.push_back(Vec3(2, 2, 2));
+  mesh.faces.push_back({mesh.faces[0][0], mesh.faces[0][1], mesh.vertexCount() - 1});
+  VcgMesh vm;
+  fromTriMesh(mesh, vm);
+  const std::string input = dir.file("fin.ply"), out = dir.file("fin_out.ply");
+  io::writePly(input, vm, {});
+  const CommandResult r = run(kPrefix + "/bin/meshlabserver -i " + quote(input) + " -o " + quote(out) + " -s " +
+                              quote(kScripts + "/fairing_explicit_2000_steps.mlx"));
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("Discrete Elastica Fairing: Topology: non-manifold edge"), std::string::npos) << r.output;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+}  // namespace
+}  // namespace elastica
