@@ -10,5 +10,6 @@ namespace elastica::cli {
 void addCurvatureCommand(CLI::App& app);
 void addGenerateCommand(CLI::App& app);
 void addFairCommand(CLI::App& app);
+void addFillCommand(CLI::App& app);
 
 }  // namespace elastica::cli
