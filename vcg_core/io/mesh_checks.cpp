@@ -17,6 +17,10 @@
 namespace elastica::io::detail {
 namespace {
 
+// Coordinates beyond this overflow what the operators and the flow compute from them (squared
+// lengths, areas², the explicit step ∝ A_min²); no physical model is that large in any unit.
+constexpr double kMaxCoordinate = 1e30;
+
 using Tri = std::array<int, 3>;
 
 int findRoot(std::vector<int>& parent, int i) {
@@ -59,7 +63,7 @@ void checkEdges(const std::string& path, const std::vector<Tri>& faces, bool mer
   }
   if (inconsistent > 0)
     fail(path, "faces are not consistently oriented (" + std::to_string(inconsistent) +
-                   " edges traversed the same way by both faces, the first between vertices " +
+                   (inconsistent == 1 ? " edge" : " edges") + " traversed the same way by both faces, the first between vertices " +
                    std::to_string(firstInconsistent->lo) + " and " + std::to_string(firstInconsistent->hi) +
                    "); re-orient them first, e.g. in MeshLab: Filters > Normals > Re-Orient all faces coherently");
 }
@@ -123,6 +127,9 @@ void checkAndRepair(const std::string& path, VcgMesh& m, ReadReport& report) {
     const auto& p = m.vert[i].cP();
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
       fail(path, "vertex " + std::to_string(positions.size()) + " has a non-finite coordinate");
+    if (std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])}) > kMaxCoordinate)
+      fail(path, "vertex " + std::to_string(positions.size()) + " has a coordinate beyond 1e30 in magnitude (lengths and "
+                     "areas would overflow); rescale the model");
     vertexIndex[i] = static_cast<int>(positions.size());
     positions.push_back(p);
   }

@@ -2,8 +2,6 @@
 
 #include <elastica/errors.h>
 
-#include <wrap/io_trimesh/import_ply.h>
-
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -43,14 +41,7 @@ ReadReport readMesh(const std::string& path, VcgMesh& m) {
 
   m.Clear();
   switch (report.format) {
-    case MeshFormat::Ply: {
-      detail::checkPlyHeader(path, size);
-      int mask = 0;
-      const int err = vcg::tri::io::ImporterPLY<VcgMesh>::Open(m, path.c_str(), mask);
-      if (err != 0) fail(path, std::string("malformed PLY (") + vcg::tri::io::ImporterPLY<VcgMesh>::ErrorMsg(err) + ")");
-      report.hasFaceSelection = (mask & vcg::tri::io::Mask::IOM_FACEFLAGS) != 0;
-      break;
-    }
+    case MeshFormat::Ply: detail::readPly(path, size, m, report); break;
     case MeshFormat::Off: detail::readOff(path, m, report); break;
     case MeshFormat::Stl: detail::readStl(path, m); break;
     case MeshFormat::Obj: detail::readObj(path, m, report); break;

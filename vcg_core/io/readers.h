@@ -1,8 +1,9 @@
 // The pieces behind readMesh (mesh_reader.cpp), private to elastica_io. Each format reader fills
 // the mesh in file order (vertex i of the file is m.vert[i]) and throws IoError "<path>: <what>"
 // naming the line, vertex or face at fault; checkAndRepair then looks at the mesh as a whole.
-// OFF and STL have our own readers: vcglib's index vertices without bounds checks (OFF), loop
-// forever on a file without a newline and trust a binary header's count (STL).
+// All four formats are parsed here or by tinyobjloader (OBJ), not by vcglib's importers, which
+// trust header counts, index without bounds checks and loop on some truncated files (see each
+// reader's opening comment).
 #pragma once
 
 #include <elastica/io/mesh_reader.h>
@@ -20,9 +21,7 @@ void readOff(const std::string& path, VcgMesh& m, ReadReport& report);
 void readStl(const std::string& path, VcgMesh& m);
 void readObj(const std::string& path, VcgMesh& m, ReadReport& report);
 
-/// Parses a PLY header and checks it before vcglib does: known property types, and element
-/// counts the file's `fileSize` bytes can hold (vcglib allocates whatever the header claims).
-void checkPlyHeader(const std::string& path, std::uintmax_t fileSize);
+void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadReport& report);
 
 /// Whole-mesh checks and safe repairs (see mesh_checks.cpp); records what it repaired.
 void checkAndRepair(const std::string& path, VcgMesh& m, ReadReport& report);
