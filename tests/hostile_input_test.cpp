@@ -2,7 +2,7 @@
 // and every bad path below must give one clear error naming the file, an exit code in 1..127 and
 // no file written (no output, no temporary left beside it) -- or, for the repairable ones, exit 0
 // with a note saying what was repaired. The outcomes are also written as a Markdown table to
-// <build>/hostile_inputs.md (the table in docs/robustness.md is a copy of it).
+// <build>/hostile_inputs-<test>.md (docs/robustness.md's table is a copy of them).
 #include "file_helpers.h"
 #include "run_elastica.h"
 
@@ -65,7 +65,8 @@ std::string lastLine(const std::string& out) {
 
 class Table {
  public:
-  void add(const std::string& input, const std::string& command, const CommandResult& r) {
+  /// One row; `scratch` (the test's temporary directory) is cut out of the message.
+  void add(const std::string& input, const std::string& command, const CommandResult& r, const std::string& scratch) {
     std::string msg = r.exitCode == 0 ? "" : lastLine(r.output);
     if (r.exitCode == 0)
       for (size_t a = 0, b; a < r.output.size(); a = b + 1) {
@@ -74,17 +75,21 @@ class Table {
         const std::string l = r.output.substr(a, b - a);
         if (l.rfind("note:", 0) == 0 || l.rfind("degenerate", 0) == 0) msg += (msg.empty() ? "" : " / ") + l;
       }
+    for (size_t at; (at = msg.find(scratch + "/")) != std::string::npos;) msg.erase(at, scratch.size() + 1);
     for (char& c : msg)
       if (c == '|') c = '/';
     rows_ += "| " + input + " | `" + command + "` | " + std::to_string(r.exitCode) + " | " + msg + " |\n";
   }
+  // One file per test (ctest runs each in its own process): hostile_inputs-<test>.md.
   ~Table() {
-    std::ofstream(std::string(ELASTICA_BUILD_DIR) + "/hostile_inputs.md")
+    if (rows_.empty()) return;
+    std::ofstream(std::string(ELASTICA_BUILD_DIR) + "/hostile_inputs-" + test_ + ".md")
         << "| input | command | exit | message |\n|---|---|---|---|\n" << rows_;
   }
 
  private:
   std::string rows_;
+  std::string test_ = ::testing::UnitTest::GetInstance()->current_test_info()->name();
 };
 
 Table& table() {
@@ -98,7 +103,7 @@ void expectRefused(const ScratchDir& dir, const std::string& label, const std::s
                    const std::string& named, const std::string& expected) {
   const std::set<std::string> before = filesIn(dir.path());
   const CommandResult r = runElastica(command);
-  table().add(label, command.substr(0, command.find(' ')) + " ...", r);
+  table().add(label, command.substr(0, command.find(' ')), r, dir.path().string());
   EXPECT_GE(r.exitCode, 1) << command << "\n" << r.output;
   EXPECT_LE(r.exitCode, 127) << command << "\n" << r.output;
   const std::string err = lastLine(r.output);
@@ -121,7 +126,7 @@ TEST(HostileInput, EveryListedFileIsRefusedOrRepairedWithAClearMessage) {
     const std::string out = dir.file("out.ply");
     if (c.exitCode == 0) {
       const CommandResult r = runElastica("curvature " + in + " -o " + out);
-      table().add(c.file, "curvature", r);
+      table().add(c.file, "curvature", r, dir.path().string());
       EXPECT_EQ(r.exitCode, 0) << r.output;
       EXPECT_NE(r.output.find(c.expected), std::string::npos) << r.output;
       EXPECT_TRUE(fs::exists(out));
