@@ -1,5 +1,6 @@
 // The `elastica` program end to end: generated and bundled real meshes, output files, exit codes.
 #include "file_helpers.h"
+#include "run_elastica.h"
 
 #include <elastica/curvature.h>
 #include <elastica/energy.h>
@@ -8,8 +9,6 @@
 #include <elastica/vcg_adapter.h>
 
 #include <gtest/gtest.h>
-
-#include <sys/wait.h>
 
 #include <array>
 #include <cmath>
@@ -23,21 +22,8 @@ using test::ScratchDir;
 
 namespace {
 
-struct CommandResult {
-  int exitCode;
-  std::string output;  // stdout and stderr together
-};
-
-CommandResult runElastica(const std::string& args) {
-  const std::string cmd = std::string(ELASTICA_EXE) + " " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  std::string out;
-  std::array<char, 4096> buf;
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) out.append(buf.data(), n);
-  const int status = pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
-}
+using test::CommandResult;
+using test::runElastica;
 
 double printedEnergy(const std::string& out) {
   std::smatch m;
