@@ -31,16 +31,7 @@ void runCurvature(const CurvatureArgs& a) {
   loadMesh(a.input, vm);
   const TriMesh mesh = toTriMesh(vm);
   const Topology topo(mesh.vertexCount(), mesh.faces);
-  if (topo.inconsistentEdgeCount() > 0) {
-    throw InvalidInputError(a.input + ": faces are not consistently oriented (" +
-                            plural(topo.inconsistentEdgeCount(), "edge") +
-                            " traversed the same way by both faces); re-orient them first, e.g. in MeshLab: "
-                            "Filters > Normals > Re-Orient all faces coherently");
-  }
-  if (topo.nonManifoldVertexCount() > 0)
-    std::cerr << "warning: " << a.input << ": " << plural(topo.nonManifoldVertexCount(), "non-manifold vertex")
-              << " (several fans of faces meet there); curvature there is not meaningful\n";
-
+  // readMesh refused inconsistent orientation and non-manifold edges and split bow-tie vertices.
   const Geometry geo = computeGeometry(topo, mesh.positions, a.area);
   CurvatureOptions opt;
   opt.h2k = a.lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;

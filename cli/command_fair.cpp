@@ -69,6 +69,9 @@ void runFair(FairArgs& a) {
       writeJson(a.report, j);
     }
     throw;
+  } catch (const InvalidInputError& e) {  // e.g. nothing can move, a sliver: say which file
+    endProgressLine();
+    throw InvalidInputError(a.input + ": " + e.what());
   } catch (...) {
     endProgressLine();
     throw;

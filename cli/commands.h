@@ -10,6 +10,7 @@ namespace elastica::cli {
 void addCurvatureCommand(CLI::App& app);
 void addGenerateCommand(CLI::App& app);
 void addFairCommand(CLI::App& app);
+void addFillCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
 
 }  // namespace elastica::cli

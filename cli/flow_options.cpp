@@ -14,7 +14,7 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
       ->transform(CLI::CheckedTransformer(flows, CLI::ignore_case));
   const std::map<std::string, Scheme> schemes{{"explicit", Scheme::Explicit}, {"semi-implicit", Scheme::SemiImplicit}};
   cmd.add_option("--scheme", opt.scheme,
-                 "explicit (the paper's step, default) or semi-implicit (adaptive, implicit in the 4th-order part)")
+                 "explicit (the paper's step; fair's default) or semi-implicit (adaptive, implicit in the 4th-order part; fill's default)")
       ->transform(CLI::CheckedTransformer(schemes, CLI::ignore_case));
   cmd.add_option("--subdivide", opt.subdivisionLevels,
                  "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state")
@@ -28,7 +28,7 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   cmd.add_flag("--remesh", opt.flipEdges,
-               "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check");
+               "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check (always on in fill)");
   cmd.add_flag("--no-tangential{false}", opt.tangentialDrift, "disable the tangential drift that keeps triangles even");
   const std::map<std::string, BoundaryMode> boundaries{{"fixed", BoundaryMode::Fixed}, {"slide", BoundaryMode::Slide}};
   cmd.add_option("--boundary", opt.boundary,

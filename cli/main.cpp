@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "elastica 0.1.0");
   elastica::cli::addCurvatureCommand(app);
   elastica::cli::addFairCommand(app);
+  elastica::cli::addFillCommand(app);
   elastica::cli::addGenerateCommand(app);
   elastica::cli::addRunCommand(app);
 

@@ -24,14 +24,20 @@ void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<do
 }
 
 io::ReadReport loadMesh(const std::string& path, VcgMesh& m) {
-  io::ReadReport report = io::readMesh(path, m);
-  if (report.duplicateVerticesMerged > 0)
-    std::cerr << "note: " << path << ": merged " << plural(report.duplicateVerticesMerged, "coincident STL corner")
-              << " into shared vertices\n";
-  if (report.polygonsTriangulated > 0)
-    std::cerr << "note: " << path << ": split " << plural(report.polygonsTriangulated, "polygon")
-              << " into triangles\n";
-  return report;
+  io::ReadReport r = io::readMesh(path, m);
+  auto note = [&](int n, const std::string& what) {
+    if (n > 0) std::cerr << "note: " << path << ": " << what << "\n";
+  };
+  const bool stl = r.format == io::MeshFormat::Stl;
+  note(r.duplicateVerticesMerged, "merged " + plural(r.duplicateVerticesMerged, stl ? "coincident STL corner" : "duplicate vertex") +
+                                      " into shared vertices");
+  note(r.polygonsTriangulated, "split " + plural(r.polygonsTriangulated, "polygon") + " into triangles");
+  note(r.degenerateFacesRemoved, "removed " + plural(r.degenerateFacesRemoved, "degenerate face") + " (a vertex used twice)");
+  note(r.duplicateFacesRemoved, "removed " + plural(r.duplicateFacesRemoved, "duplicate face"));
+  note(r.nonManifoldVerticesSplit, "split " + plural(r.nonManifoldVerticesSplit, "non-manifold vertex") +
+                                       " (several fans of faces meeting at one point) into one vertex per fan");
+  note(r.unreferencedVerticesRemoved, "removed " + plural(r.unreferencedVerticesRemoved, "unreferenced vertex"));
+  return r;
 }
 
 }  // namespace elastica::cli

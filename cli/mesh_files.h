@@ -10,8 +10,8 @@
 
 namespace elastica::cli {
 
-/// Reads `path` into `m`, telling on stderr what was repaired on the way (merged STL corners,
-/// triangulated polygons). @throws IoError.
+/// Reads `path` into `m`, telling on stderr what was repaired on the way (merged vertices,
+/// triangulated polygons, removed faces, split vertices; see io::readMesh). @throws IoError.
 io::ReadReport loadMesh(const std::string& path, VcgMesh& m);
 
 /// Stores H (the core's sign; reported as +1/r on a sphere) and K on `m` and writes it as PLY with

@@ -24,6 +24,8 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev                        # tests and benchmarks
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev    # the MeshLab plugin and its integration tests
   xvfb xauth                                           # headless MeshLab for the plugin tests
+  clang                                                # libFuzzer targets (scripts/fuzz.sh)
+  libclang-rt-14-dev                                   # libFuzzer and sanitizer runtimes for clang
   libtinyxml2-dev                                      # .mlx filter scripts (elastica run)
   xdotool                                              # the plugin's GUI test finds MeshLab's dialog
   imagemagick                                          # ... and screenshots it (import)

@@ -1,6 +1,6 @@
 // The `elastica` program end to end: generated and bundled real meshes, output files, exit codes.
-#include "command_helpers.h"
 #include "file_helpers.h"
+#include "run_elastica.h"
 
 #include <elastica/curvature.h>
 #include <elastica/energy.h>
@@ -9,8 +9,6 @@
 #include <elastica/vcg_adapter.h>
 
 #include <gtest/gtest.h>
-
-#include <sys/wait.h>
 
 #include <array>
 #include <cmath>
@@ -25,7 +23,7 @@ using test::ScratchDir;
 namespace {
 
 using test::CommandResult;
-CommandResult runElastica(const std::string& args) { return test::runCommand(std::string(ELASTICA_EXE) + " " + args); }
+using test::runElastica;
 
 double printedEnergy(const std::string& out) {
   std::smatch m;
@@ -217,6 +215,47 @@ TEST(Cli, HelpForProgramAndSubcommands) {
   EXPECT_NE(run.output.find("--lambda-fix"), std::string::npos);
   EXPECT_NE(run.output.find("--area"), std::string::npos);
   EXPECT_EQ(runElastica("generate --help").exitCode, 0);
+}
+
+}  // namespace elastica
+
+namespace elastica {
+
+// The README's first command: the bundled bunny with its flank cut away, restored.
+TEST(Cli, FillRestoresTheBunnyFlank) {
+  ScratchDir dir("cli-fill");
+  const std::string in = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";
+  const CommandResult run = runElastica("fill " + in + " -o " + dir.file("r.ply") + " --ascii --report " + dir.file("r.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("1 hole filled, 0 skipped"), std::string::npos) << run.output;
+  const test::AsciiPly before = test::readAsciiPly(in), after = test::readAsciiPly(dir.file("r.ply"));
+  ASSERT_GT(after.vertices.size(), before.vertices.size());
+  EXPECT_GT(after.faceCount, before.faceCount);
+  for (std::size_t v = 0; v < before.vertices.size(); ++v) {  // original vertices bit for bit
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(after.vertices[v][k], before.vertices[v][k]) << v;
+  }
+  // The output reads back, and its total curvature is finite.
+  const CommandResult curv = runElastica("curvature " + dir.file("r.ply") + " -o " + dir.file("c.ply"));
+  ASSERT_EQ(curv.exitCode, 0) << curv.output;
+  EXPECT_TRUE(std::isfinite(printedEnergy(curv.output))) << curv.output;
+  std::ifstream json(dir.file("r.json"));
+  const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("\"filled\": true"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"stop\": \"converged\""), std::string::npos) << text;
+}
+
+TEST(Cli, FillSkipsHolesAboveTheLimit) {
+  ScratchDir dir("cli-fill-limit");
+  const std::string in = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";
+  const CommandResult run = runElastica("fill " + in + " -o " + dir.file("r.ply") + " --ascii --max-hole-edges 10");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("skipped: larger than the limit of 10 border edges"), std::string::npos) << run.output;
+  EXPECT_EQ(test::readAsciiPly(dir.file("r.ply")).faceCount, test::readAsciiPly(in).faceCount);
+  // Subdivision would split original faces: refused, nothing written.
+  const CommandResult bad = runElastica("fill " + in + " -o " + dir.file("s.ply") + " --subdivide 1");
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("subdivision is not available"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("s.ply")));
 }
 
 }  // namespace elastica

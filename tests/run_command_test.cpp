@@ -1,7 +1,7 @@
 // `elastica run -i IN -o OUT -s SCRIPT.mlx`: script handling (defaults with warnings, clear errors
 // for unknown filters, parameters and values) and its results. The agreement with meshlabserver
 // and the plugin is tested in tests/plugin/.
-#include "command_helpers.h"
+#include "run_elastica.h"
 #include "file_helpers.h"
 
 #include <elastica/io/mesh_reader.h>
@@ -21,7 +21,7 @@ using test::ScratchDir;
 
 const std::string kScripts = ELASTICA_PLUGIN_SCRIPTS_DIR;
 
-CommandResult runElastica(const std::string& args) { return test::runCommand(std::string(ELASTICA_EXE) + " " + args); }
+using test::runElastica;
 
 std::string script(const std::string& filters) {
   return "<!DOCTYPE FilterScript>\n<FilterScript>\n" + filters + "</FilterScript>\n";

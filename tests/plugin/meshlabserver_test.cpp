@@ -3,13 +3,15 @@
 // match `elastica run` with the same script and input: same counts, positions within 1e-5 of the
 // bounding-box diagonal (MeshLab stores float; both compute in double on a copy). Runs under
 // `xvfb-run -a` (ctest does that): MeshLab needs an X display even for meshlabserver.
-#include "../command_helpers.h"
+#include "../run_elastica.h"
 #include "../file_helpers.h"
 
 #include <elastica/io/mesh_reader.h>
 #include <elastica/io/mesh_writer.h>
 #include <elastica/shapes.h>
 #include <elastica/vcg_adapter.h>
+
+#include <wrap/io_trimesh/import_ply.h>
 
 #include <gtest/gtest.h>
 
@@ -28,6 +30,13 @@ std::string quote(const std::string& s) { return test::quoted(s); }
 const std::string kWork = PLUGIN_TEST_WORK_DIR;
 const std::string kPrefix = kWork + "/meshlab-prefix";
 
+
+// Reads a PLY written by meshlabserver or `elastica run` with vcglib's importer, which (unlike
+// io::readMesh) also loads vertex quality and colour.
+void loadOutput(const std::string& path, VcgMesh& m) {
+  int mask = 0;
+  ASSERT_EQ(vcg::tri::io::ImporterPLY<VcgMesh>::Open(m, path.c_str(), mask), 0) << path;
+}
 
 double diagonal(const VcgMesh& m) {
   Vec3 lo = Vec3::Constant(INFINITY), hi = -lo;
@@ -92,8 +101,8 @@ class Meshlabserver : public ::testing::Test {
     ASSERT_TRUE(std::filesystem::exists(mlOut)) << ml.output;
     el = run(quote(ELASTICA_EXE) + " run -i " + quote(input) + " -o " + quote(runOut) + " -s " + quote(script));
     ASSERT_EQ(el.exitCode, 0) << el.output;
-    io::readMesh(mlOut, meshlab);
-    io::readMesh(runOut, ours);
+    loadOutput(mlOut, meshlab);
+    loadOutput(runOut, ours);
     ASSERT_EQ(meshlab.vn, ours.vn);
     ASSERT_EQ(meshlab.fn, ours.fn);
     for (int f = 0; f < meshlab.fn; ++f)

@@ -14,6 +14,7 @@ void writePly(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt) {
   if (opt.vertexColor) info.mask |= vio::Mask::IOM_VERTCOLOR;
   if (opt.vertexNormal) info.mask |= vio::Mask::IOM_VERTNORMAL;
   if (opt.faceFlags) info.mask |= vio::Mask::IOM_FACEFLAGS;
+  for (const std::string& name : opt.faceFloatAttributes) info.AddPerFaceFloatAttribute(name.c_str());
   if (opt.curvature) {
     info.AddPerVertexFloatAttribute("mean_curvature");
     info.AddPerVertexFloatAttribute("gaussian_curvature");

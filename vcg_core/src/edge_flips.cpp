@@ -17,6 +17,12 @@ double angleAt(const Vec3& apex, const Vec3& a, const Vec3& b) {
 }  // namespace
 
 int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int maxPasses) {
+  return flipToDelaunay(
+      mesh, [&](int a, int b, int c, int d, int, int) { return movable[a] && movable[b] && movable[c] && movable[d]; },
+      maxPasses);
+}
+
+int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
   const auto& p = mesh.positions;
   int total = 0;
   for (int pass = 0; pass < maxPasses; ++pass) {
@@ -31,7 +37,7 @@ int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int 
       // f0 = (a, b, c) with c opposite the edge; f1 holds the edge as (b, a) with d opposite.
       const int c = mesh.faces[f0][oc[0] % 3], d = mesh.faces[f1][oc[1] % 3];
       const int a = mesh.faces[f0][(oc[0] % 3 + 1) % 3], b = mesh.faces[f0][(oc[0] % 3 + 2) % 3];
-      if (!movable[a] || !movable[b] || !movable[c] || !movable[d] || c == d) continue;
+      if (c == d || !allowed(a, b, c, d, f0, f1)) continue;
       if (angleAt(p[c], p[a], p[b]) + angleAt(p[d], p[a], p[b]) <= M_PI + kAngleSlack) continue;
       bool exists = false;
       for (int k = topo.ringBegin(c); k < topo.ringEnd(c) && !exists; ++k) exists = topo.ringVertex(k) == d;

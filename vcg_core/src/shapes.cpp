@@ -9,6 +9,21 @@
 #include <string>
 
 namespace elastica::shapes {
+namespace {
+
+// Quad (a, b, c, d), counter-clockwise seen from its front, as two triangles split along a–c or
+// b–d. Callers alternate the diagonal so the triangulation has no preferred direction.
+void addQuad(TriMesh& m, int a, int b, int c, int d, bool alongAC) {
+  if (alongAC) {
+    m.faces.push_back({a, b, c});
+    m.faces.push_back({a, c, d});
+  } else {
+    m.faces.push_back({a, b, d});
+    m.faces.push_back({b, c, d});
+  }
+}
+
+}  // namespace
 
 TriMesh icosphere(double radius, int level) {
   if (!(radius > 0) || level < 0 || level > 9)
@@ -41,14 +56,27 @@ TriMesh torus(double R, double r, int nu, int nv) {
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {
       // (u, v) is a right-handed chart for the outward normal: ∂u × ∂v points outward.
-      // Diagonals alternate (when nu and nv are even) so the triangulation has no preferred direction.
-      if ((i + j) % 2 == 0) {
-        m.faces.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-        m.faces.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-      } else {
-        m.faces.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
-        m.faces.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-      }
+      addQuad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), (i + j) % 2 == 0);
+    }
+  }
+  return m;
+}
+
+TriMesh cylinder(double radius, double height, int around, int along) {
+  if (!(radius > 0) || !(height > 0) || around < 3 || along < 1)
+    throw InvalidInputError("cylinder: need radius, height > 0, at least 3 segments around and 1 along");
+  TriMesh m;
+  for (int j = 0; j <= along; ++j) {
+    for (int i = 0; i < around; ++i) {
+      const double u = 2 * M_PI * i / around;
+      m.positions.emplace_back(radius * std::cos(u), radius * std::sin(u), height * j / along);
+    }
+  }
+  auto id = [&](int i, int j) { return j * around + (i % around); };
+  for (int j = 0; j < along; ++j) {
+    for (int i = 0; i < around; ++i) {
+      // ∂u × ∂z points outward.
+      addQuad(m, id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1), (i + j) % 2 == 0);
     }
   }
   return m;

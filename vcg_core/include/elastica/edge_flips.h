@@ -7,6 +7,7 @@
 #include <elastica/types.h>
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace elastica {
@@ -15,5 +16,11 @@ namespace elastica {
 /// the two new triangles keep the orientation of the old pair and the new edge does not exist yet.
 /// Repeats up to `maxPasses` passes. Returns the number of flips.
 int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int maxPasses = 5);
+
+/// The general form: flips non-Delaunay edges where `allowed(a, b, c, d, f0, f1)` is true — edge
+/// (a, b) shared by faces f0 = (a, b, c) and f1 = (b, a, d), to become edge (c, d) — as long as the
+/// orientation is kept and (c, d) is not an edge yet. Up to `maxPasses` passes; returns the flips.
+using FlipFilter = std::function<bool(int a, int b, int c, int d, int f0, int f1)>;
+int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses);
 
 }  // namespace elastica

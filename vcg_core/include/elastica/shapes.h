@@ -17,6 +17,11 @@ TriMesh icosphere(double radius, int level);
 /// the axis and `nv` around the tube, each quad split along a diagonal. Outward oriented.
 TriMesh torus(double R, double r, int nu, int nv);
 
+/// Open cylinder around z of `radius` from z = 0 to z = `height`: `around` segments around the
+/// axis, `along` rows along it, quads split along alternating diagonals. Outward oriented; its two
+/// end circles are boundary loops. Not a Willmore surface: the elastica flow pushes it outward.
+TriMesh cylinder(double radius, double height, int around, int along);
+
 /// Flat (nx+1)×(ny+1) grid in the plane z = 0 with `spacing`, quads split along alternating
 /// diagonals, normals +z. Has a boundary.
 TriMesh grid(int nx, int ny, double spacing = 1.0);

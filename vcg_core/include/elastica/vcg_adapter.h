@@ -51,6 +51,31 @@ void fromTriMesh(const TriMesh& mesh, VcgMeshT& m) {
   }
 }
 
+/// Appends to `m` the vertices and faces of `mesh` beyond those `m` already has, when `m`'s own
+/// are `mesh`'s first ones (a fill appends, never renumbers): the old elements keep every attribute
+/// they carry (colours, normals, flags). `m` must be compact (no deleted elements); positions of
+/// the old vertices are not touched. Returns false, changing nothing, if `m` does not fit.
+template <class VcgMeshT>
+bool appendNewElements(const TriMesh& mesh, VcgMeshT& m) {
+  using S = typename VcgMeshT::ScalarType;
+  const size_t nv = m.vert.size(), nf = m.face.size();
+  if (size_t(m.vn) != nv || size_t(m.fn) != nf || mesh.positions.size() < nv || mesh.faces.size() < nf) return false;
+  if (mesh.positions.size() > nv) {
+    auto vi = vcg::tri::Allocator<VcgMeshT>::AddVertices(m, mesh.positions.size() - nv);  // updates face pointers
+    for (size_t i = nv; i < mesh.positions.size(); ++i, ++vi) {
+      const Vec3& p = mesh.positions[i];
+      vi->P() = typename VcgMeshT::CoordType(S(p[0]), S(p[1]), S(p[2]));
+    }
+  }
+  if (mesh.faces.size() > nf) {
+    auto fi = vcg::tri::Allocator<VcgMeshT>::AddFaces(m, mesh.faces.size() - nf);
+    for (size_t f = nf; f < mesh.faces.size(); ++f, ++fi) {
+      for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[mesh.faces[f][k]];
+    }
+  }
+  return true;
+}
+
 /// Writes positions back into the live vertices of `m` (same order as toTriMesh).
 template <class VcgMeshT>
 void writePositions(VcgMeshT& m, const std::vector<Vec3>& p) {

@@ -5,6 +5,7 @@
 #include <elastica/vcg_mesh.h>
 
 #include <string>
+#include <vector>
 
 namespace elastica::io {
 
@@ -14,7 +15,8 @@ struct PlyWriteOptions {
   bool vertexColor = false;   ///< write per-vertex colour
   bool vertexNormal = false;  ///< write per-vertex normals
   bool curvature = false;     ///< write the "mean_curvature" and "gaussian_curvature" attributes
-  bool faceFlags = false;     ///< write per-face flags (MeshLab's face selection)
+  bool faceFlags = false;     ///< write per-face flags (MeshLab reads its face selection from them)
+  std::vector<std::string> faceFloatAttributes;  ///< per-face float attributes of `m` to write, by name
 };
 
 /// Writes `m` to `path` atomically (temporary file + rename).

@@ -1,4 +1,5 @@
-// Running a program from a test and capturing what it prints.
+// Running the real `elastica` binary (ELASTICA_EXE is set by tests/CMakeLists.txt), or any command,
+// from a test.
 #pragma once
 
 #include <sys/wait.h>
@@ -10,14 +11,14 @@
 namespace elastica::test {
 
 struct CommandResult {
-  int exitCode;
+  int exitCode;        // 128 + signal if the program was killed
   std::string output;  // stdout and stderr together
 };
 
-/// Runs `command` through the shell; a signal shows as exit code 128 + signal.
+/// Runs `command` through the shell.
 inline CommandResult runCommand(const std::string& command) {
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return {-1, "popen failed"};
+  const std::string cmd = command + " 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
   std::string out;
   std::array<char, 4096> buf;
   size_t n;
@@ -25,6 +26,8 @@ inline CommandResult runCommand(const std::string& command) {
   const int status = pclose(pipe);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), out};
 }
+
+inline CommandResult runElastica(const std::string& args) { return runCommand(std::string(ELASTICA_EXE) + " " + args); }
 
 /// `s` in single quotes for the shell (paths here hold no single quote).
 inline std::string quoted(const std::string& s) { return "'" + s + "'"; }

@@ -1,0 +1,22 @@
+// Distances between two triangle soups, sampled: how far a restored patch is from the surface that
+// was cut away (and back), for the restoration benchmark.
+#pragma once
+
+#include <elastica/types.h>
+
+#include <vector>
+
+namespace elastica::bench {
+
+struct DistanceStats {
+  double rms = 0, max = 0;
+};
+
+/// Distance from points sampled on the faces of `a` (`perEdge`² samples per face, barycentric grid)
+/// to the nearest face of `b`, brute force (fine for patches of a few thousand faces).
+DistanceStats sampledDistance(const TriMesh& a, const TriMesh& b, int perEdge = 6);
+
+/// The faces of `m` flagged in `keep`, with their vertices, as a standalone mesh.
+TriMesh facesOf(const TriMesh& m, const std::vector<std::uint8_t>& keep);
+
+}  // namespace elastica::bench

@@ -1,0 +1,159 @@
+// `elastica fill IN -o OUT`: restore the missing regions of a mesh (paper §4): every hole up to a
+// size is triangulated, refined to the surrounding density, started from a bi-Laplace solve and
+// faired with the elastica flow while two rings around it stay fixed.
+#include "commands.h"
+#include "flow_options.h"
+#include "flow_report.h"
+#include "mesh_files.h"
+
+#include <elastica/curvature.h>
+#include <elastica/errors.h>
+#include <elastica/hole_filling.h>
+#include <elastica/vcg_adapter.h>
+
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+namespace elastica::cli {
+namespace {
+
+struct FillArgs {
+  std::string input, output, report;
+  bool ascii = false, color = false;
+  HoleFillOptions fill;
+};
+
+const char* stageName(FillStage s) {
+  switch (s) {
+    case FillStage::Triangulation: return "triangulation";
+    case FillStage::Refinement: return "refinement";
+    case FillStage::Biharmonic: return "biharmonic";
+    case FillStage::Flow: return "flow";
+  }
+  return "?";
+}
+
+nlohmann::json toJson(const HoleReport& h) {
+  nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}};
+  if (!h.reason.empty()) j["reason"] = h.reason;
+  if (!h.filled) return j;
+  j["new_vertices"] = h.newVertices;
+  j["new_faces"] = h.newFaces;
+  j["energy_before"] = h.energyBefore;
+  j["energy_after"] = h.energyAfter;
+  j["steps"] = h.steps;
+  j["stop"] = stopName(h.stop);
+  j["min_angle_degrees"] = h.minAngleDegrees;
+  j["seconds"] = h.seconds;
+  return j;
+}
+
+void runFill(FillArgs& a) {
+  io::checkOutputPath(a.output, a.input);
+  if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
+  VcgMesh vm;
+  loadMesh(a.input, vm);
+  TriMesh mesh = toTriMesh(vm);
+  const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
+
+  a.fill.flow.progress = terminalProgress("fill");
+  std::vector<std::uint8_t> isNew;
+  HoleFillReport report;
+  try {
+    report = fillHoles(mesh, &isNew, a.fill);
+  } catch (...) {
+    endProgressLine();
+    throw;
+  }
+  endProgressLine();
+  if (interrupted()) throw Error("interrupted: nothing written");
+
+  // New elements are appended: the input's own keep every attribute the file gave them.
+  if (!appendNewElements(mesh, vm)) fromTriMesh(mesh, vm);
+  auto isNewAttr = vcg::tri::Allocator<VcgMesh>::GetPerFaceAttribute<float>(vm, "elastica_new");
+  for (std::size_t f = 0; f < vm.face.size(); ++f) {
+    isNewAttr[f] = isNew[f] ? 1.0f : 0.0f;
+    if (isNew[f]) vm.face[f].SetS();
+    else vm.face[f].ClearS();
+  }
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  const Geometry geo = computeGeometry(topo, mesh.positions, a.fill.flow.area);
+  const Curvature curv = computeCurvature(topo, geo, mesh.positions, a.fill.flow.curvature);
+  storeCurvature(vm, curv.H, curv.K);
+  io::PlyWriteOptions w;
+  w.binary = !a.ascii;
+  w.vertexQuality = w.curvature = true;
+  w.vertexColor = a.color;
+  w.faceFlags = true;
+  w.faceFloatAttributes = {"elastica_new"};
+  io::writePly(a.output, vm, w);
+
+  int skipped = 0;
+  for (std::size_t i = 0; i < report.holes.size(); ++i) {
+    const HoleReport& h = report.holes[i];
+    if (!h.filled) {
+      ++skipped;
+      std::printf("hole %zu: %d border edges, skipped: %s\n", i + 1, h.borderEdges, h.reason.c_str());
+      continue;
+    }
+    std::printf("hole %zu: %d border edges, filled with %s and %s", i + 1, h.borderEdges,
+                plural(h.newVertices, "vertex").c_str(), plural(h.newFaces, "face").c_str());
+    if (h.steps > 0) std::printf(", energy %.6g -> %.6g in %lld steps (%s)", h.energyBefore, h.energyAfter, h.steps, stopName(h.stop));
+    std::printf(", smallest angle %.1f deg, %.2f s\n", h.minAngleDegrees, h.seconds);
+    if (!h.reason.empty()) std::cerr << "warning: hole " << i + 1 << ": " << h.reason << "\n";
+  }
+  std::printf("%s: %d vertices, %d faces -> %d vertices, %d faces; %s filled, %d skipped, %.2f s\n", a.input.c_str(),
+              inVertices, inFaces, mesh.vertexCount(), mesh.faceCount(), plural(report.filledCount(), "hole").c_str(),
+              skipped, report.seconds);
+  std::printf("wrote %s (new faces selected and flagged by the face property elastica_new)\n", a.output.c_str());
+
+  if (!a.report.empty()) {
+    nlohmann::json j{{"input", {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}}},
+                     {"output", {{"file", a.output}, {"vertices", mesh.vertexCount()}, {"faces", mesh.faceCount()}}},
+                     {"stop_after", stageName(a.fill.stopAfter)},
+                     {"max_hole_edges", a.fill.maxHoleEdges},
+                     {"filled", report.filledCount()},
+                     {"skipped", skipped},
+                     {"seconds", report.seconds},
+                     {"holes", nlohmann::json::array()}};
+    for (const HoleReport& h : report.holes) j["holes"].push_back(toJson(h));
+    writeJson(a.report, j);
+    std::printf("wrote %s\n", a.report.c_str());
+  }
+}
+
+}  // namespace
+
+void addFillCommand(CLI::App& app) {
+  auto args = std::make_shared<FillArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "fill",
+      "Fill the holes of a mesh with patches that continue its curvature (the paper's restoration):\n"
+      "minimum-weight triangulation, refinement to the surrounding density, a bi-Laplace start, then\n"
+      "the elastica flow (semi-implicit by default) with two rings around each hole fixed.\n"
+      "Original vertices and faces are kept bit for bit; new faces are selected in the output.");
+  cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
+  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")
+      ->capture_default_str()
+      ->check(CLI::Range(3, 100000));
+  const std::map<std::string, FillStage> stages{{"triangulation", FillStage::Triangulation},
+                                                {"refinement", FillStage::Refinement},
+                                                {"biharmonic", FillStage::Biharmonic},
+                                                {"flow", FillStage::Flow}};
+  cmd->add_option("--stop-after", args->fill.stopAfter,
+                  "triangulation, refinement, biharmonic (CGAL-like fairing) or flow (default)")
+      ->transform(CLI::CheckedTransformer(stages, CLI::ignore_case));
+  cmd->add_option("--density", args->fill.refinement.density,
+                  "Liepa's refinement factor: larger makes smaller triangles")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  addFlowOptions(*cmd, args->fill.flow);
+  cmd->add_option("--report", args->report, "write a JSON report (one entry per hole)");
+  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
+  cmd->callback([args] { runFill(*args); });
+}
+
+}  // namespace elastica::cli

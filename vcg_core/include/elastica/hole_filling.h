@@ -1,0 +1,73 @@
+// Shape restoration (paper §4, Figs. 9–10): fill the holes of a mesh with patches that continue
+// the surrounding surface's curvature. Each hole is triangulated (Liepa's minimum-weight
+// triangulation), refined to the density around it, started from a bi-Laplace solve, and faired
+// with a curvature flow while two rings of the surrounding mesh stay fixed (G¹ continuity).
+#pragma once
+
+#include <elastica/flow.h>
+#include <elastica/patch_refinement.h>
+#include <elastica/types.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace elastica {
+
+/// How far the pipeline goes (each stage is a comparison in the restoration benchmark).
+enum class FillStage {
+  Triangulation,  ///< the minimum-weight triangulation only (no new vertices)
+  Refinement,     ///< + refinement to the surrounding density (new vertices on the flat fill)
+  Biharmonic,     ///< + the bi-Laplace solve (CGAL's fairing)
+  Flow,           ///< + the curvature flow (default)
+};
+
+struct HoleFillOptions {
+  /// Holes with more border edges than this are left open (MeshLab's "Max size to be closed").
+  int maxHoleEdges = 500;
+  FillStage stopAfter = FillStage::Flow;
+  PatchRefinementOptions refinement;
+  /// The flow that fairs each patch (the boundary mode is ignored: the surrounding mesh is fixed).
+  /// Subdivision is not allowed: it would split the original faces. Defaults to the semi-implicit
+  /// elastica flow, which converges in tens of steps where the explicit scheme needs hundreds of
+  /// thousands (a 70° cap of a 2,562-vertex sphere: 34 steps in 0.03 s against 640,000 in 107 s),
+  /// with edge flips, which keep the patch's triangles from degenerating where a deep hole
+  /// stretches it (smallest angle 24° instead of 19° on a 100° cap).
+  FlowOptions flow = defaultFillFlow();
+
+  static FlowOptions defaultFillFlow() {
+    FlowOptions f;
+    f.scheme = Scheme::SemiImplicit;
+    f.flipEdges = true;
+    return f;
+  }
+};
+
+/// What happened to one hole.
+struct HoleReport {
+  int borderEdges = 0;
+  bool filled = false;
+  std::string reason;        ///< why it was skipped, or what went wrong with the flow; empty if all went well
+  int newVertices = 0, newFaces = 0;
+  double energyBefore = 0;   ///< total curvature of the patch's active region when the flow starts
+  double energyAfter = 0;    ///< … and when it stops (equal to energyBefore without a flow)
+  long long steps = 0;
+  StopReason stop = StopReason::Converged;
+  double minAngleDegrees = 0;  ///< smallest angle in the patch's faces
+  double seconds = 0;
+};
+
+struct HoleFillReport {
+  std::vector<HoleReport> holes;
+  int filledCount() const;
+  double seconds = 0;
+};
+
+/// Fills the holes of `mesh` with at most opt.maxHoleEdges border edges. Original vertices and
+/// faces keep their indices and values bit for bit; new vertices and faces are appended.
+/// `newFaceFlags` (optional) is resized to the face count, 1 on new faces and 0 elsewhere.
+/// A hole whose flow fails keeps its bi-Laplace patch; its report says so.
+/// @throws InvalidInputError on non-manifold edges or invalid options; the mesh is then unchanged.
+HoleFillReport fillHoles(TriMesh& mesh, std::vector<std::uint8_t>* newFaceFlags, const HoleFillOptions& opt);
+
+}  // namespace elastica

@@ -1,0 +1,38 @@
+// The pieces behind readMesh (mesh_reader.cpp), private to elastica_io. Each format reader fills
+// the mesh in file order (vertex i of the file is m.vert[i]) and throws IoError "<path>: <what>"
+// naming the line, vertex or face at fault; checkAndRepair then looks at the mesh as a whole.
+// All four formats are parsed here or by tinyobjloader (OBJ), not by vcglib's importers, which
+// trust header counts, index without bounds checks and loop on some truncated files (see each
+// reader's opening comment).
+#pragma once
+
+#include <elastica/io/mesh_reader.h>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace elastica::io::detail {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what);
+
+void readOff(const std::string& path, VcgMesh& m, ReadReport& report);
+void readStl(const std::string& path, VcgMesh& m);
+void readObj(const std::string& path, VcgMesh& m, ReadReport& report);
+
+void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadReport& report);
+
+/// Whole-mesh checks and safe repairs (see mesh_checks.cpp); records what it repaired.
+void checkAndRepair(const std::string& path, VcgMesh& m, ReadReport& report);
+
+// Text helpers for the line-based formats.
+std::vector<std::string_view> splitTokens(std::string_view line);
+/// A whole token as a number (strtod syntax, so "nan" and "inf" parse: callers check finiteness).
+bool parseNumber(std::string_view token, double& value);
+/// A whole token as an integer (no sign limits beyond long long).
+bool parseInteger(std::string_view token, long long& value);
+/// `s` cut to `n` characters, for quoting untrusted text in a message.
+std::string quote(std::string_view s, std::size_t n = 20);
+
+}  // namespace elastica::io::detail

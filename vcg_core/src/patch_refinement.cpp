@@ -1,0 +1,47 @@
+#include <elastica/edge_flips.h>
+#include <elastica/patch_refinement.h>
+
+namespace elastica {
+namespace {
+
+constexpr int kFlipPasses = 100;  // Delaunay relaxation converges in a handful; this only bounds it
+
+}  // namespace
+
+void refinePatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
+                 const PatchRefinementOptions& opt) {
+  sigma.resize(mesh.positions.size(), 0);
+  const FlipFilter insidePatch = [&](int, int, int, int, int f0, int f1) { return patchFace[f0] && patchFace[f1]; };
+  flipToDelaunay(mesh, insidePatch, kFlipPasses);
+
+  const double alpha = opt.density;
+  for (int pass = 0; pass < opt.maxPasses; ++pass) {
+    bool split = false;
+    const std::size_t faceCount = mesh.faces.size();
+    for (std::size_t f = 0; f < faceCount; ++f) {
+      if (!patchFace[f]) continue;
+      const Face t = mesh.faces[f];
+      const Vec3 c = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3.0;
+      const double sc = (sigma[t[0]] + sigma[t[1]] + sigma[t[2]]) / 3.0;
+      bool tooLarge = true;
+      for (int v : t) {
+        const double d = alpha * (c - mesh.positions[v]).norm();
+        tooLarge = tooLarge && d > sc && d > sigma[v];
+      }
+      if (!tooLarge) continue;
+      const int x = mesh.vertexCount();
+      mesh.positions.push_back(c);
+      sigma.push_back(sc);
+      mesh.faces[f] = {t[0], t[1], x};
+      mesh.faces.push_back({t[1], t[2], x});
+      mesh.faces.push_back({t[2], t[0], x});
+      patchFace.push_back(1);
+      patchFace.push_back(1);
+      split = true;
+    }
+    if (!split) break;
+    flipToDelaunay(mesh, insidePatch, kFlipPasses);
+  }
+}
+
+}  // namespace elastica
