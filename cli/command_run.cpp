@@ -141,9 +141,9 @@ void runScript(const RunArgs& a) {
     }
     if (drawn) std::fprintf(stderr, "\n");
     for (const std::string& line : summary) std::printf("%s: %s\n", f.name.c_str(), line.c_str());
-    if (id == ef::FilterId::Curvature || values.getBool("colorByMeanCurvature"))
-      w.vertexQuality = w.vertexColor = w.curvature = true;
-    if (id == ef::FilterId::Fairing && values.getBool("Selected")) w.faceFlags = true;
+    const ef::FilterOutputs outputs = ef::filterOutputs(id, values);
+    if (outputs.curvature) w.vertexQuality = w.vertexColor = w.curvature = true;
+    if (outputs.faceSelection) w.faceFlags = true;
   }
   io::writePly(a.output, vm, w);
   std::printf("wrote %s (%s, %s)\n", a.output.c_str(), plural(vm.vn, "vertex").c_str(), plural(vm.fn, "face").c_str());
@@ -156,8 +156,9 @@ void addRunCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "run",
       "Run a MeshLab filter script (.mlx) that uses the Elastica filters ('Discrete Elastica Fairing',\n"
-      "'Discrete Elastica Curvature'), as meshlabserver with the Elastica plugin would. Parameters the\n"
-      "script omits take their defaults (with a warning). Writes a PLY.");
+      "'Fill Holes with Discrete Elastica', 'Discrete Elastica Curvature'), as meshlabserver with the\n"
+      "Elastica plugin would. Parameters the script omits take their defaults (with a warning).\n"
+      "Writes a PLY.");
   cmd->add_option("-i,--input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   cmd->add_option("-s,--script", args->script, "MeshLab filter script (.mlx)")->required();

@@ -102,8 +102,7 @@ bool FilterElasticaPlugin::applyFilter(QAction* action, MeshDocument& md, const 
     if (cb) progress = [cb](int percent, const std::string& what) { return cb(percent, what.c_str()); };
 
     const std::vector<std::string> summary = ef::applyFilter(id, mm->cm, values, progress);
-    if (id == ef::FilterId::Curvature || values.getBool("colorByMeanCurvature"))
-      mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
+    if (ef::filterOutputs(id, values).curvature) mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
     mm->UpdateBoxAndNormals();
     for (const std::string& line : summary) Log("%s: %s", name.c_str(), line.c_str());
     return true;

@@ -100,6 +100,9 @@ TEST_F(RunCommand, BadParametersAreErrors) {
       {fairing + "<Param type=\"RichEnum\" name=\"flow\" value=\"7\"/></filter>", "enum value 7 is not in 0..2"},
       {fairing + "<Param type=\"RichInt\" name=\"subdivisionLevels\" value=\"-1\"/></filter>",
        "'subdivisionLevels' must be in 0..8"},
+      {"<filter name=\"Fill Holes with Discrete Elastica\"><Param type=\"RichInt\" name=\"MaxHoleSize\" value=\"2\"/>"
+       "</filter>",
+       "'MaxHoleSize' must be >= 3"},
       {"<filter name=\"Discrete Elastica Curvature\"><Param type=\"RichBool\" name=\"lambdaFix\"/></filter>",
        "has no value attribute"},
   };

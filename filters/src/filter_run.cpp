@@ -4,6 +4,7 @@
 #include <elastica/fairing.h>
 #include <elastica/filters/filter_run.h>
 #include <elastica/geometry.h>
+#include <elastica/hole_filling.h>
 #include <elastica/sign_convention.h>
 #include <elastica/topology.h>
 
@@ -57,19 +58,44 @@ const char* stopText(StopReason s) {
   return "?";
 }
 
+// flow, scheme and maxSteps: the parameters every flow filter has.
+void readFlowParameters(const ParamValues& v, const FilterSpec& spec, FlowOptions& o) {
+  o.flow = static_cast<FlowType>(enumValue(v, spec, "flow"));
+  o.scheme = static_cast<Scheme>(enumValue(v, spec, "scheme"));
+  o.maxSteps = v.getInt("maxSteps");
+  if (o.maxSteps < 0) throw InvalidInputError("parameter 'maxSteps' must be >= 0");
+}
+
+// MeshLab's progress from the flow's: the share of maxSteps taken.
+std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, long long maxSteps) {
+  if (!progress) return {};
+  const double steps = double(std::max<long long>(maxSteps, 1));
+  return [progress, steps](const FlowProgress& p) {
+    const int percent = static_cast<int>(std::min(99.0, 100.0 * double(p.step) / steps));
+    return progress(percent, "Elastica flow: level " + std::to_string(p.level) + ", step " + std::to_string(p.step) +
+                                 ", energy " + number(p.energy));
+  };
+}
+
 }  // namespace
+
+FilterOutputs filterOutputs(FilterId id, const ParamValues& v) {
+  switch (id) {
+    case FilterId::Fairing: return {v.getBool("colorByMeanCurvature"), v.getBool("Selected")};
+    case FilterId::FillHoles: return {false, v.getBool("NewFaceSelected")};
+    case FilterId::Curvature: return {true, false};
+  }
+  return {};
+}
 
 FlowOptions fairingOptions(const ParamValues& v) {
   const FilterSpec spec = filterSpec(FilterId::Fairing, {});
   FlowOptions o;
-  o.flow = static_cast<FlowType>(enumValue(v, spec, "flow"));
-  o.scheme = static_cast<Scheme>(enumValue(v, spec, "scheme"));
+  readFlowParameters(v, spec, o);
   o.boundary = static_cast<BoundaryMode>(enumValue(v, spec, "boundary"));
-  o.maxSteps = v.getInt("maxSteps");
   o.subdivisionLevels = v.getInt("subdivisionLevels");
   o.energyTolerance = v.getFloat("energyTolerance");
   o.tangentialDrift = v.getBool("tangentialDrift");
-  if (o.maxSteps < 0) throw InvalidInputError("parameter 'maxSteps' must be >= 0");
   if (o.subdivisionLevels < 0 || o.subdivisionLevels > 8)
     throw InvalidInputError("parameter 'subdivisionLevels' must be in 0..8");
   if (!(o.energyTolerance >= 0)) throw InvalidInputError("parameter 'energyTolerance' must be >= 0");
@@ -83,14 +109,7 @@ FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, cons
   checkedTopology(mesh, /*rejectNonManifoldVertices=*/true);
   if (selected && std::count(selection.begin(), selection.end(), 1) == 0)
     throw InvalidInputError("'Affect only selected faces' is on, but no face is selected");
-  if (progress) {
-    const double maxSteps = double(std::max<long long>(opt.maxSteps, 1));
-    opt.progress = [&progress, maxSteps](const FlowProgress& p) {
-      const int percent = static_cast<int>(std::min(99.0, 100.0 * double(p.step) / maxSteps));
-      return progress(percent, "Elastica flow: level " + std::to_string(p.level) + ", step " + std::to_string(p.step) +
-                                   ", energy " + number(p.energy));
-    };
-  }
+  opt.progress = flowProgress(progress, opt.maxSteps);
 
   FairingResult r;
   const std::vector<Face> inputFaces = mesh.faces;
@@ -112,6 +131,41 @@ FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, cons
                   number(report.energyFinal, "%.9g"));
   r.mesh = std::move(mesh);
   if (selected) r.selection = std::move(selection);
+  return r;
+}
+
+HoleFillOptions fillHolesOptions(const ParamValues& v) {
+  const FilterSpec spec = filterSpec(FilterId::FillHoles, {});
+  HoleFillOptions o;
+  o.maxHoleEdges = v.getInt("MaxHoleSize");
+  if (o.maxHoleEdges < 3) throw InvalidInputError("parameter 'MaxHoleSize' must be >= 3 (a hole has 3 edges or more)");
+  readFlowParameters(v, spec, o.flow);
+  return o;
+}
+
+FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress& progress) {
+  HoleFillOptions opt = fillHolesOptions(v);
+  checkedTopology(mesh, /*rejectNonManifoldVertices=*/true);
+  opt.flow.progress = flowProgress(progress, opt.flow.maxSteps);
+
+  FillHolesResult r;
+  r.originalVertices = mesh.vertexCount();
+  r.originalFaces = mesh.faceCount();
+  const HoleFillReport report = fillHoles(mesh, &r.newFaces, opt);
+  for (const HoleReport& h : report.holes) {
+    std::string line = "hole of " + std::to_string(h.borderEdges) + " border edges: ";
+    if (h.filled)
+      line += "filled with " + std::to_string(h.newVertices) + " vertices and " + std::to_string(h.newFaces) +
+              " faces; patch energy " + number(h.energyBefore) + " -> " + number(h.energyAfter) + " in " +
+              std::to_string(h.steps) + " steps (" + stopText(h.stop) + ")";
+    else
+      line += "left open";
+    if (!h.reason.empty()) line += "; " + h.reason;
+    r.log.push_back(line);
+  }
+  r.log.push_back("filled " + std::to_string(report.filledCount()) + " of " + std::to_string(report.holes.size()) +
+                  " holes in " + number(report.seconds, "%.2f") + " s");
+  r.mesh = std::move(mesh);
   return r;
 }
 

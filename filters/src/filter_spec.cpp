@@ -1,6 +1,7 @@
 #include <elastica/errors.h>
 #include <elastica/filters/filter_spec.h>
 #include <elastica/flow.h>
+#include <elastica/hole_filling.h>
 
 namespace elastica::filters {
 namespace {
@@ -31,8 +32,8 @@ ParamSpec flowParam() {
                    "spheres. Laplacian of mean curvature: F = -Lap H, keeps the volume, converges to constant mean "
                    "curvature. Bilaplacian: the equal-weight bi-umbrella, the paper's comparison (shrinks).");
 }
-ParamSpec schemeParam() {
-  return enumParam("scheme", 0, {"Explicit", "Semi-implicit"}, "Time integration",
+ParamSpec schemeParam(Scheme defaultScheme) {
+  return enumParam("scheme", int(defaultScheme), {"Explicit", "Semi-implicit"}, "Time integration",
                    "Explicit: the paper's step tau = A_min^2/150 (the number of steps grows like the square of "
                    "the vertex count). Semi-implicit: implicit in the fourth-order part, adaptive step, far fewer "
                    "steps (Elastica and Laplacian of mean curvature only).");
@@ -58,7 +59,7 @@ FilterSpec fairing(const MeshFacts& mesh) {
            kReference;
   s.params = {
       flowParam(),
-      schemeParam(),
+      schemeParam(FlowOptions{}.scheme),
       maxStepsParam(),
       intParam("subdivisionLevels", 0, "Subdivision levels",
                "Coarse to fine: how many times the mesh is split 1-to-4 at edge midpoints, each time when the "
@@ -76,6 +77,31 @@ FilterSpec fairing(const MeshFacts& mesh) {
       boolParam("colorByMeanCurvature", false, "Colour by mean curvature",
                 "Afterwards store the mean curvature H (+1/r on a sphere) as vertex quality and colour the "
                 "vertices by it (red low, blue high)."),
+  };
+  return s;
+}
+
+FilterSpec fillHoles() {
+  const HoleFillOptions defaults;
+  FilterSpec s;
+  s.id = FilterId::FillHoles;
+  s.name = "Fill Holes with Discrete Elastica";
+  s.info = std::string(
+               "Restores missing regions (the paper's shape restoration): every hole up to the given size is "
+               "closed by a minimum-weight triangulation, refined to the density around it and started from a "
+               "bi-Laplace solve. The patch is then faired with the discrete elastica flow (the gradient descent "
+               "of the total curvature) while two rings of the surrounding mesh stay fixed, so that it joins "
+               "with continuous tangent planes (G1) and continues the surface's curvature.") +
+           kReference;
+  s.params = {
+      intParam("MaxHoleSize", defaults.maxHoleEdges, "Max size to be closed",
+               "Holes whose boundary has more edges than this are left open (counted as in MeshLab's Close "
+               "Holes)."),
+      flowParam(),
+      schemeParam(defaults.flow.scheme),
+      maxStepsParam(),
+      boolParam("NewFaceSelected", true, "Select the newly created faces",
+                "Afterwards only the new faces are selected (any previous selection is lost)."),
   };
   return s;
 }
@@ -120,11 +146,12 @@ const ParamSpec* FilterSpec::param(const std::string& n) const {
   return nullptr;
 }
 
-std::vector<FilterSpec> allFilters(const MeshFacts& mesh) { return {fairing(mesh), curvature()}; }
+std::vector<FilterSpec> allFilters(const MeshFacts& mesh) { return {fairing(mesh), fillHoles(), curvature()}; }
 
 FilterSpec filterSpec(FilterId id, const MeshFacts& mesh) {
   switch (id) {
     case FilterId::Fairing: return fairing(mesh);
+    case FilterId::FillHoles: return fillHoles();
     case FilterId::Curvature: return curvature();
   }
   throw InvalidInputError("filterSpec: unknown filter id " + std::to_string(int(id)));

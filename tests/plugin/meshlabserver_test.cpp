@@ -171,6 +171,20 @@ TEST_F(Meshlabserver, FairingExampleRunsToConvergence) {
   EXPECT_NE(ml.output.find("converged at the energy plateau"), std::string::npos) << ml.output;
 }
 
+// The bunny with its flank cut away: the hole is filled, the new faces (only they) selected.
+TEST_F(Meshlabserver, FillHolesExampleMatchesElasticaRun) {
+  const std::string input = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";
+  runBoth(input, kExamples + "/fill_holes.mlx", "fill");
+  VcgMesh in;
+  io::readMesh(input, in);
+  EXPECT_GT(ours.fn, in.fn);
+  EXPECT_EQ(selectedFaces(ours), ours.fn - in.fn);
+  EXPECT_EQ(selectedFaces(meshlab), selectedFaces(ours));
+  // The original vertices stay where they were (up to float storage).
+  for (int i = 0; i < in.vn; ++i) ASSERT_LE((in.vert[i].cP() - meshlab.vert[i].cP()).Norm(), 1e-6 * diagonal(in)) << i;
+  EXPECT_NE(ml.output.find("Fill Holes with Discrete Elastica: filled 1 of 1 holes"), std::string::npos) << ml.output;
+}
+
 // Unsuitable input: meshlabserver reports our message in its log, fails, and writes nothing.
 TEST_F(Meshlabserver, NonManifoldInputFailsWithMessage) {
   TriMesh mesh = shapes::icosphere(1.0, 1);

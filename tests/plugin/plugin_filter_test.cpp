@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace {
@@ -83,6 +84,7 @@ TEST_F(PluginFilter, FiltersAreInSmoothingClass) {
     EXPECT_TRUE(plugin.getClass(a) & MeshFilterInterface::Smoothing) << a->text().toStdString();
   }
   EXPECT_TRUE(names.contains("Discrete Elastica Fairing"));
+  EXPECT_TRUE(names.contains("Fill Holes with Discrete Elastica"));
   EXPECT_TRUE(names.contains("Discrete Elastica Curvature"));
 }
 
@@ -99,7 +101,7 @@ TEST_F(PluginFilter, NonManifoldEdgeFailsWithMessageAndMeshUnchanged) {
   mesh.positions.push_back(elastica::Vec3(2, 2, 2));
   mesh.faces.push_back({mesh.faces[0][0], mesh.faces[0][1], mesh.vertexCount() - 1});
   fill(mm->cm, mesh);
-  for (const QString name : {"Discrete Elastica Fairing", "Discrete Elastica Curvature"}) {
+  for (const QString name : {"Discrete Elastica Fairing", "Fill Holes with Discrete Elastica", "Discrete Elastica Curvature"}) {
     const Snapshot before = snapshot(mm->cm);
     const RichParameterList params = defaults(name);
     EXPECT_FALSE(plugin.applyFilter(action(name), doc, params, nullptr)) << name.toStdString();
@@ -148,4 +150,30 @@ TEST_F(PluginFilter, FairingMovesVerticesAndLogsEnergy) {
   EXPECT_NE(after.quality, before.quality);  // H stored as quality
   EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTQUALITY));
   EXPECT_TRUE(logLines(log).join("\n").contains("stopped at maxSteps")) << logLines(log).join("\n").toStdString();
+}
+
+// Hole filling appends: the original vertices keep their positions and colours, the new faces
+// (only they) end up selected.
+TEST_F(PluginFilter, FillHolesAppendsAndSelectsNewFaces) {
+  elastica::TriMesh mesh = elastica::shapes::icosphere(1.0, 3);
+  std::vector<elastica::Face> kept;
+  for (const auto& f : mesh.faces)
+    if (mesh.positions[f[0]][2] < 0.9 || mesh.positions[f[1]][2] < 0.9 || mesh.positions[f[2]][2] < 0.9) kept.push_back(f);
+  ASSERT_LT(kept.size(), mesh.faces.size());
+  mesh.faces = kept;  // a cap cut away: one hole; the cap's inner vertices are left unreferenced
+  fill(mm->cm, mesh);
+  for (auto& v : mm->cm.vert) v.C() = vcg::Color4b(10, 20, 30, 255);
+  mm->cm.face[0].SetS();  // a previous selection, to be replaced
+  const Snapshot before = snapshot(mm->cm);
+  const RichParameterList params = defaults("Fill Holes with Discrete Elastica");
+  EXPECT_TRUE(params.getBool("NewFaceSelected"));
+  ASSERT_TRUE(plugin.applyFilter(action("Fill Holes with Discrete Elastica"), doc, params, nullptr))
+      << plugin.errorMsg().toStdString();
+  const Snapshot after = snapshot(mm->cm);
+  ASSERT_GT(after.faces.size(), before.faces.size());
+  EXPECT_TRUE(std::equal(before.coords.begin(), before.coords.end(), after.coords.begin()));
+  EXPECT_TRUE(std::equal(before.colors.begin(), before.colors.end(), after.colors.begin()));
+  EXPECT_TRUE(std::equal(before.faces.begin(), before.faces.end(), after.faces.begin()));
+  for (size_t f = 0; f < mm->cm.face.size(); ++f) EXPECT_EQ(mm->cm.face[f].IsS(), f >= kept.size()) << f;
+  EXPECT_TRUE(logLines(log).join("\n").contains("filled 1 of 1 holes")) << logLines(log).join("\n").toStdString();
 }

@@ -21,6 +21,12 @@ MeshFacts meshFacts(const VcgMeshT& m) {
   return facts;
 }
 
+template <class VcgMeshT>
+void updateBoxAndNormals(VcgMeshT& m) {
+  vcg::tri::UpdateBounding<VcgMeshT>::Box(m);
+  vcg::tri::UpdateNormal<VcgMeshT>::PerVertexNormalizedPerFaceNormalized(m);
+}
+
 /// Runs filter `id` with values `v` on `m`. Returns summary lines for the user.
 /// @throws elastica::Error (and std::bad_alloc) with `m` unchanged.
 template <class VcgMeshT>
@@ -28,6 +34,30 @@ std::vector<std::string> applyFilter(FilterId id, VcgMeshT& m, const ParamValues
   if (id == FilterId::Curvature) {
     CurvatureResult r = runCurvature(toTriMesh(m), v);
     storeCurvature(m, r.H, r.K);
+    return std::move(r.log);
+  }
+
+  if (id == FilterId::FillHoles) {
+    FillHolesResult r = runFillHoles(toTriMesh(m), v, progress);
+    // Append the new vertices and faces; the original ones keep their attributes. Compacting
+    // makes vcg indices the TriMesh indices (toTriMesh skips deleted elements).
+    vcg::tri::Allocator<VcgMeshT>::CompactEveryVector(m);
+    using S = typename VcgMeshT::ScalarType;
+    const size_t nv = m.vert.size(), nf = m.face.size();
+    vcg::tri::Allocator<VcgMeshT>::AddVertices(m, r.mesh.positions.size() - nv);
+    for (size_t i = nv; i < m.vert.size(); ++i) {
+      const Vec3& p = r.mesh.positions[i];
+      m.vert[i].P() = typename VcgMeshT::CoordType(S(p[0]), S(p[1]), S(p[2]));
+    }
+    vcg::tri::Allocator<VcgMeshT>::AddFaces(m, r.mesh.faces.size() - nf);
+    for (size_t f = nf; f < m.face.size(); ++f)
+      for (int k = 0; k < 3; ++k) m.face[f].V(k) = &m.vert[r.mesh.faces[f][k]];
+    if (v.getBool("NewFaceSelected")) {  // as MeshLab's Close Holes: only the new faces selected
+      vcg::tri::UpdateSelection<VcgMeshT>::FaceClear(m);
+      for (size_t f = nf; f < m.face.size(); ++f) m.face[f].SetS();
+      vcg::tri::UpdateSelection<VcgMeshT>::VertexFromFaceStrict(m);
+    }
+    updateBoxAndNormals(m);
     return std::move(r.log);
   }
 
@@ -46,8 +76,7 @@ std::vector<std::string> applyFilter(FilterId id, VcgMeshT& m, const ParamValues
     vcg::tri::UpdateSelection<VcgMeshT>::VertexFromFaceStrict(m);
   }
   if (r.colorByMeanCurvature) storeCurvature(m, r.curvature.H, r.curvature.K);
-  vcg::tri::UpdateBounding<VcgMeshT>::Box(m);
-  vcg::tri::UpdateNormal<VcgMeshT>::PerVertexNormalizedPerFaceNormalized(m);
+  updateBoxAndNormals(m);
   return std::move(r.log);
 }
 

@@ -6,6 +6,7 @@
 #include <elastica/curvature.h>
 #include <elastica/filters/filter_spec.h>
 #include <elastica/flow.h>
+#include <elastica/hole_filling.h>
 #include <elastica/types.h>
 
 #include <cstdint>
@@ -17,6 +18,14 @@ namespace elastica::filters {
 
 /// Progress of a long filter: a percentage and a line of text. Returning false cancels.
 using Progress = std::function<bool(int percent, const std::string& what)>;
+
+/// What a filter leaves on the mesh besides positions and faces (for the data MeshLab must keep,
+/// and what `elastica run` writes).
+struct FilterOutputs {
+  bool curvature = false;      ///< vertex quality and colour by H; mean/gaussian_curvature attributes
+  bool faceSelection = false;  ///< the face selection was set
+};
+FilterOutputs filterOutputs(FilterId id, const ParamValues& v);
 
 /// The FlowOptions a "Discrete Elastica Fairing" parameter set stands for.
 /// @throws InvalidInputError naming the parameter if a value is out of range.
@@ -38,6 +47,23 @@ struct FairingResult {
 ///         bad parameters, ...), NumericalError (the flow diverged), Error (cancelled).
 FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, const ParamValues& v,
                          const Progress& progress);
+
+/// The HoleFillOptions a "Fill Holes with Discrete Elastica" parameter set stands for.
+/// @throws InvalidInputError naming the parameter if a value is out of range.
+HoleFillOptions fillHolesOptions(const ParamValues& v);
+
+/// What a hole-filling run produced: the original vertices and faces unchanged and first, the new
+/// ones appended.
+struct FillHolesResult {
+  TriMesh mesh;
+  int originalVertices = 0, originalFaces = 0;
+  std::vector<std::uint8_t> newFaces;  ///< 1 on new faces
+  std::vector<std::string> log;        ///< one line per hole, and a total
+};
+
+/// Fills the holes of `mesh` as "Fill Holes with Discrete Elastica" with values `v`.
+/// @throws InvalidInputError (non-manifold or inconsistently oriented input, bad parameters).
+FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress& progress);
 
 /// What "Discrete Elastica Curvature" computed.
 struct CurvatureResult {

@@ -16,7 +16,7 @@
 namespace elastica::filters {
 
 /// The filters, in menu order. The values are the plugin's FilterIDType ids.
-enum class FilterId { Fairing = 0, Curvature = 1 };
+enum class FilterId { Fairing = 0, FillHoles = 1, Curvature = 2 };
 
 /// The parameter kinds used, as MeshLab names them in .mlx files (RichBool, RichInt, ...).
 enum class ParamType { Bool, Int, Float, Enum };
