@@ -42,16 +42,8 @@ std::vector<std::string> applyFilter(FilterId id, VcgMeshT& m, const ParamValues
     // Append the new vertices and faces; the original ones keep their attributes. Compacting
     // makes vcg indices the TriMesh indices (toTriMesh skips deleted elements).
     vcg::tri::Allocator<VcgMeshT>::CompactEveryVector(m);
-    using S = typename VcgMeshT::ScalarType;
-    const size_t nv = m.vert.size(), nf = m.face.size();
-    vcg::tri::Allocator<VcgMeshT>::AddVertices(m, r.mesh.positions.size() - nv);
-    for (size_t i = nv; i < m.vert.size(); ++i) {
-      const Vec3& p = r.mesh.positions[i];
-      m.vert[i].P() = typename VcgMeshT::CoordType(S(p[0]), S(p[1]), S(p[2]));
-    }
-    vcg::tri::Allocator<VcgMeshT>::AddFaces(m, r.mesh.faces.size() - nf);
-    for (size_t f = nf; f < m.face.size(); ++f)
-      for (int k = 0; k < 3; ++k) m.face[f].V(k) = &m.vert[r.mesh.faces[f][k]];
+    const size_t nf = m.face.size();
+    if (!appendNewElements(r.mesh, m)) throw Error("fill: the mesh changed under the filter; nothing written");
     if (v.getBool("NewFaceSelected")) {  // as MeshLab's Close Holes: only the new faces selected
       vcg::tri::UpdateSelection<VcgMeshT>::FaceClear(m);
       for (size_t f = nf; f < m.face.size(); ++f) m.face[f].SetS();
