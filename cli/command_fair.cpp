@@ -1,6 +1,7 @@
 // `elastica fair IN -o OUT`: fair a mesh with the discrete elastica flow (or a comparison flow),
 // optionally coarse to fine, optionally only its selected faces.
 #include "commands.h"
+#include "face_index_file.h"
 #include "flow_options.h"
 #include "flow_report.h"
 #include "mesh_files.h"
@@ -18,7 +19,7 @@ namespace elastica::cli {
 namespace {
 
 struct FairArgs {
-  std::string input, output, report;
+  std::string input, output, report, selectedFaces;
   bool ascii = false, color = false, selected = false;
   FlowOptions flow;
 };
@@ -50,6 +51,17 @@ void runFair(FairArgs& a) {
     for (auto s : selection) count += s;
     if (count == 0) throw InvalidInputError(a.input + ": --selected, but no face is selected");
   }
+  if (!a.selectedFaces.empty()) {
+    // The indices count the file's faces; reading must not have renumbered them.
+    const int changed = read.polygonsTriangulated + read.degenerateFacesRemoved + read.duplicateFacesRemoved;
+    if (changed > 0)
+      throw InvalidInputError(a.input + ": --selected-faces, but reading changed the file's faces (" +
+                              std::to_string(read.polygonsTriangulated) + " polygons triangulated, " +
+                              std::to_string(read.degenerateFacesRemoved + read.duplicateFacesRemoved) +
+                              " faces removed), so its face numbers do not match; save the mesh as triangles first");
+    selection = readFaceIndexFile(a.selectedFaces, mesh.faceCount());
+  }
+  const bool restricted = !selection.empty();
 
   auto describe = [&](nlohmann::json j) {
     j["input"] = {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}};
@@ -59,7 +71,7 @@ void runFair(FairArgs& a) {
   a.flow.progress = terminalProgress("fair");
   FlowReport report;
   try {
-    report = fair(mesh, a.selected ? &selection : nullptr, a.flow);
+    report = fair(mesh, restricted ? &selection : nullptr, a.flow);
   } catch (const FlowDivergedError& e) {
     endProgressLine();
     // The mesh is not written, but the report tells how far the run got and why it stopped.
@@ -115,8 +127,14 @@ void addFairCommand(CLI::App& app) {
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   addFlowOptions(*cmd, args->flow);
-  cmd->add_flag("--selected", args->selected,
-                "fair only the selected faces (PLY face flags, as MeshLab saves its selection); two rings around stay fixed");
+  CLI::Option* selected = cmd->add_flag(
+      "--selected", args->selected,
+      "fair only the selected faces (PLY face flags, as MeshLab saves its selection, or a face property 'selected'); "
+      "two rings around stay fixed");
+  cmd->add_option("--selected-faces", args->selectedFaces,
+                  "fair only the faces listed in this text file (0-based face indices, separated by spaces, commas or "
+                  "lines; # starts a comment); two rings around stay fixed")
+      ->excludes(selected);
   cmd->add_option("--report", args->report, "write a JSON report (energies, steps, stages, energy history)");
   cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
   cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");

@@ -70,6 +70,7 @@ void runFill(FillArgs& a) {
   if (interrupted()) throw Error("interrupted: nothing written");
 
   // New elements are appended: the input's own keep every attribute the file gave them.
+  applyWelds(report.welds, vm);
   if (!appendNewElements(mesh, vm)) fromTriMesh(mesh, vm);
   auto isNewAttr = vcg::tri::Allocator<VcgMesh>::GetPerFaceAttribute<float>(vm, "elastica_new");
   for (std::size_t f = 0; f < vm.face.size(); ++f) {
@@ -103,6 +104,10 @@ void runFill(FillArgs& a) {
     std::printf(", smallest angle %.1f deg, %.2f s\n", h.minAngleDegrees, h.seconds);
     if (!h.reason.empty()) std::cerr << "warning: hole " << i + 1 << ": " << h.reason << "\n";
   }
+  if (!report.welds.empty())
+    std::printf("merged %zu vertex %s into the vertex %s copied: two fans of faces met at one point and a patch "
+                "joined them\n",
+                report.welds.size(), report.welds.size() == 1 ? "copy" : "copies", report.welds.size() == 1 ? "it" : "they");
   std::printf("%s: %d vertices, %d faces -> %d vertices, %d faces; %s filled, %d skipped, %.2f s\n", a.input.c_str(),
               inVertices, inFaces, mesh.vertexCount(), mesh.faceCount(), plural(report.filledCount(), "hole").c_str(),
               skipped, report.seconds);
@@ -115,6 +120,7 @@ void runFill(FillArgs& a) {
                      {"max_hole_edges", a.fill.maxHoleEdges},
                      {"filled", report.filledCount()},
                      {"skipped", skipped},
+                     {"vertex_copies_merged", report.welds.size()},
                      {"seconds", report.seconds},
                      {"holes", nlohmann::json::array()}};
     for (const HoleReport& h : report.holes) j["holes"].push_back(toJson(h));
@@ -132,7 +138,9 @@ void addFillCommand(CLI::App& app) {
       "Fill the holes of a mesh with patches that continue its curvature (the paper's restoration):\n"
       "minimum-weight triangulation, refinement to the surrounding density, a bi-Laplace start, then\n"
       "the elastica flow (semi-implicit by default) with two rings around each hole fixed.\n"
-      "Original vertices and faces are kept bit for bit; new faces are selected in the output.");
+      "Original vertices and faces are kept bit for bit; new faces are selected in the output. (A hole\n"
+      "border that passes twice through one point, as two copies of a vertex, is split there and the\n"
+      "copies merged where a patch joins their fans.)");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")

@@ -9,16 +9,8 @@
 #   MeshLabSource_FOUND, VCGLIB_DIR, MESHLAB_SOURCE_DIR (may stay empty: only the plugin needs it)
 #   target vcglib::vcglib (INTERFACE, SYSTEM includes: vcglib is not warning-clean)
 #   VCGLIB_PLY_SOURCE    wrap/ply/plylib.cpp, to compile into anything doing PLY I/O
-set(_ml_roots)
-if(DEFINED ENV{ELASTICA_CACHE_DIR})
-  list(APPEND _ml_roots "$ENV{ELASTICA_CACHE_DIR}")
-endif()
-if(DEFINED ENV{XDG_CACHE_HOME})
-  list(APPEND _ml_roots "$ENV{XDG_CACHE_HOME}/elastica")
-endif()
-if(DEFINED ENV{HOME})
-  list(APPEND _ml_roots "$ENV{HOME}/.cache/elastica")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/ElasticaCacheRoots.cmake)
+elastica_cache_roots(_ml_roots)
 
 if(NOT MESHLAB_SOURCE_DIR AND NOT VCGLIB_DIR)
   execute_process(COMMAND dpkg-query -W -f=\${Version} meshlab

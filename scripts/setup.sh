@@ -5,7 +5,8 @@
 #   scripts/setup.sh --check    only report what is missing (exit 1 if anything is)
 #
 # 1. Binary packages (apt-get) that the build, the tests and the MeshLab plugin need.
-# 2. Debian's `meshlab` *source* package, the same version as the installed `meshlab` binary (so the
+# 2. Two real sample meshes from Debian's libcgal-demo package (downloaded, not installed).
+# 3. Debian's `meshlab` *source* package, the same version as the installed `meshlab` binary (so the
 #    plugin ABI matches), unpacked into a cache: it holds vcglib and MeshLab's plugin headers
 #    (src/common). The machines have no deb-src lines, so we derive a private apt configuration at
 #    run time from the system's own Debian sources (same mirrors, type swapped to deb-src) and use
@@ -37,7 +38,7 @@ die() { printf 'setup: error: %s\n' "$*" >&2; exit 1; }
 check_only=0
 case "${1:-}" in
   --check) check_only=1 ;;
-  -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   "") ;;
   *) die "unknown option '$1' (try --help)" ;;
 esac
@@ -76,10 +77,46 @@ if ((${#missing[@]})); then
     || die "apt-get install failed for: ${missing[*]}"
 fi
 
-# ---------------------------------------------------------------- 2. MeshLab source tree
+cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
+
+# ---------------------------------------------------------------- 2. real sample meshes
+# Two meshes from the data archive of Debian's libcgal-demo package (CGAL's own examples): an
+# elephant (2,775 vertices, genus 3) and the same elephant with 106 holes, whose borders pass
+# twice through some vertices. The restoration tests and benchmarks use them. `apt-get download`
+# fetches the package file without installing it (24 MB; no root needed once apt's lists exist).
+fetch_cgal_meshes() {
+  local candidate dir work deb
+  candidate=$(apt-cache policy libcgal-demo 2>/dev/null | awk '/Candidate:/ {print $2}')
+  if [[ -z "$candidate" || "$candidate" == "(none)" ]]; then
+    ((check_only)) && { log "apt's package lists do not know libcgal-demo (run apt-get update)"; exit 1; }
+    as_root apt-get update -qq || die "apt-get update failed; cannot look up libcgal-demo"
+    candidate=$(apt-cache policy libcgal-demo 2>/dev/null | awk '/Candidate:/ {print $2}')
+  fi
+  [[ -n "$candidate" && "$candidate" != "(none)" ]] || die "no libcgal-demo package in the configured Debian sources"
+  dir="$cache/cgal-data-$candidate"
+  if [[ -f "$dir/.elastica-complete" ]]; then
+    log "sample meshes ready: $dir"
+    return
+  fi
+  ((check_only)) && { log "sample meshes not fetched yet ($dir)"; exit 1; }
+  work=$(mktemp -d "$cache/cgal-work.XXXXXX")
+  log "fetching Debian's libcgal-demo $candidate for two sample meshes (about 24 MB)"
+  (cd "$work" && apt-get -o APT::Sandbox::User="$(id -un)" download -qq "libcgal-demo=$candidate") || die "could not download libcgal-demo=$candidate"
+  deb=$(ls "$work"/libcgal-demo_*.deb | head -n1)
+  rm -rf "$dir" && mkdir -p "$dir"
+  dpkg-deb --fsys-tarfile "$deb" | tar -xO ./usr/share/doc/libcgal-dev/data.tar.gz \
+    | tar -xz -C "$dir" --strip-components=1 data/meshes/elephant.off data/meshes/elephant-with-holes.off \
+    || die "libcgal-demo $candidate lacks data/meshes/elephant.off or elephant-with-holes.off"
+  rm -rf "$work"
+  touch "$dir/.elastica-complete"
+  log "sample meshes ready: $dir"
+}
+mkdir -p "$cache"
+fetch_cgal_meshes
+
+# ---------------------------------------------------------------- 3. MeshLab source tree
 version=$(dpkg-query -W -f='${Version}' meshlab 2>/dev/null || true)
 [[ -n "$version" ]] || die "the meshlab package is not installed"
-cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
 tree="$cache/meshlab-src-$version"
 stamp="$tree/.elastica-complete"
 

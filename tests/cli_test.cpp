@@ -206,6 +206,60 @@ TEST(Cli, FairOptionsAndFailures) {
   EXPECT_NE(json.find("\"error\""), std::string::npos) << json;
 }
 
+// Region fairing from a face index file: the faces of a noisy sphere's upper cap are listed; every
+// vertex with a face outside the list stays bit for bit, and the cap's interior is faired.
+TEST(Cli, FairSelectedFacesFromAnIndexFile) {
+  ScratchDir dir("cli-fair-index");
+  ASSERT_EQ(runElastica("generate icosphere --level 3 --noise 0.05 --seed 7 -o " + dir.file("n.ply")).exitCode, 0);
+  VcgMesh vm;
+  io::readMesh(dir.file("n.ply"), vm);
+  const TriMesh input = toTriMesh(vm);
+  std::string list = "# faces of the cap z > 0.4\n";
+  std::vector<char> listed(input.faces.size(), 0);
+  for (std::size_t f = 0; f < input.faces.size(); ++f) {
+    const Face& t = input.faces[f];
+    if ((input.positions[t[0]] + input.positions[t[1]] + input.positions[t[2]]).z() / 3 > 0.4) {
+      list += std::to_string(f) + (f % 7 == 0 ? ",\n" : " ");
+      listed[f] = 1;
+    }
+  }
+  test::writeText(dir.file("cap.txt"), list);
+  const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
+                                        " --scheme semi-implicit --selected-faces " + dir.file("cap.txt"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  VcgMesh out;
+  io::readMesh(dir.file("f.ply"), out);
+  const TriMesh faired = toTriMesh(out);
+  ASSERT_EQ(faired.vertexCount(), input.vertexCount());
+  std::vector<char> outside(input.positions.size(), 0);
+  for (std::size_t f = 0; f < input.faces.size(); ++f)
+    if (!listed[f])
+      for (int v : input.faces[f]) outside[v] = 1;
+  int moved = 0;
+  for (int v = 0; v < input.vertexCount(); ++v) {
+    if (outside[v]) EXPECT_EQ(faired.positions[v], input.positions[v]) << v;
+    else moved += faired.positions[v] != input.positions[v];
+  }
+  EXPECT_GT(moved, 10);
+
+  // Bad lists: a clear error naming the line, exit 1, no output.
+  test::writeText(dir.file("bad.txt"), "1 2\n3 x4\n");
+  CommandResult bad = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --selected-faces " + dir.file("bad.txt"));
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("'x4' is not a face index (line 2)"), std::string::npos) << bad.output;
+  test::writeText(dir.file("range.txt"), std::to_string(input.faces.size()));
+  bad = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --selected-faces " + dir.file("range.txt"));
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("does not exist"), std::string::npos) << bad.output;
+  test::writeText(dir.file("empty.txt"), "# nothing\n");
+  bad = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --selected-faces " + dir.file("empty.txt"));
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("lists no face"), std::string::npos) << bad.output;
+  EXPECT_FALSE(std::filesystem::exists(dir.file("g.ply")));
+  EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --selected --selected-faces " +
+                        dir.file("cap.txt")).exitCode, 2);  // one or the other
+}
+
 TEST(Cli, HelpForProgramAndSubcommands) {
   CommandResult run = runElastica("--help");
   EXPECT_EQ(run.exitCode, 0);

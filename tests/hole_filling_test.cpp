@@ -1,4 +1,6 @@
 // Shape restoration: holes cut from analytic surfaces are filled and compared with the surface.
+#include "self_intersections.h"
+
 #include <elastica/errors.h>
 #include <elastica/hole_boundary.h>
 #include <elastica/hole_filling.h>
@@ -8,9 +10,6 @@
 #include <elastica/topology.h>
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
-
-#include <vcg/complex/algorithms/clean.h>
-#include <vcg/complex/algorithms/update/bounding.h>
 
 #include <gtest/gtest.h>
 
@@ -41,14 +40,7 @@ TriMesh cutAway(const TriMesh& m, const std::function<bool(const Vec3&)>& cut) {
   return out;
 }
 
-int selfIntersections(const TriMesh& m) {
-  VcgMesh vm;
-  fromTriMesh(m, vm);
-  vcg::tri::UpdateBounding<VcgMesh>::Box(vm);
-  std::vector<VcgFace*> hits;
-  vcg::tri::Clean<VcgMesh>::SelfIntersections(vm, hits);
-  return static_cast<int>(hits.size());
-}
+using test::selfIntersections;
 
 // The polar cap of a 2,562-vertex unit icosphere within `degrees` of +z, cut away.
 TriMesh sphereWithCapHole(double degrees) {
@@ -210,6 +202,106 @@ TEST(HoleFilling, ScaleCovariant) {
     worst = std::max(worst, (c.positions[i] * 1024 - a.positions[i]).norm());
   }
   EXPECT_LT(worst, 1e-9);
+}
+
+// A spherical patch (a 12 × 12 grid projected onto the unit sphere) with two holes of 2 × 2
+// squares that touch at one corner p. p's remaining faces form two fans meeting at a point only; p
+// is stored as two copies, one per fan (as the reader splits such a vertex, and as many files store
+// it), so one hole border runs through both copies: a figure of eight.
+TriMesh sphericalPatchWithPinchedHole() {
+  const Vec3 p(6, 6, 0);
+  TriMesh mesh = cutAway(shapes::grid(12, 12), [&](const Vec3& c) {
+    const Vec3 d = c - p;
+    return (d.x() > 0 && d.x() < 2 && d.y() > 0 && d.y() < 2) || (d.x() < 0 && d.x() > -2 && d.y() < 0 && d.y() > -2);
+  });
+  int pinch = -1;
+  for (int i = 0; i < mesh.vertexCount(); ++i)
+    if (mesh.positions[i] == p) pinch = i;
+  // The faces at p in the (−x, +y) quadrant keep p; those in (+x, −y) get the copy.
+  const int copy = mesh.vertexCount();
+  mesh.positions.push_back(p);
+  for (Face& f : mesh.faces) {
+    const Vec3 c = (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
+    if (c.x() > p.x())
+      for (int& v : f) v = v == pinch ? copy : v;
+  }
+  for (Vec3& q : mesh.positions) q = Vec3(q.x() - 6, q.y() - 6, 10).normalized();
+  return mesh;
+}
+
+TEST(HoleFilling, BorderThroughTwoCopiesOfAPointIsSplitAndTheCopiesWelded) {
+  TriMesh mesh = sphericalPatchWithPinchedHole();
+  const TriMesh before = mesh;
+  {
+    const Topology topo(mesh.vertexCount(), mesh.faces);
+    ASSERT_EQ(topo.nonManifoldVertexCount(), 0);
+    const auto loops = findHoleLoops(topo);
+    ASSERT_EQ(loops.size(), 2u);  // the patch's rim (48 edges) and the figure of eight (16)
+    ASSERT_EQ(std::min(loops[0].edgeCount(), loops[1].edgeCount()), 16);
+  }
+  HoleFillOptions opt;
+  opt.maxHoleEdges = 20;  // the rim stays open
+  std::vector<std::uint8_t> isNew;
+  const HoleFillReport r = fillHoles(mesh, &isNew, opt);
+
+  ASSERT_EQ(r.welds.size(), 1u);
+  EXPECT_EQ(r.welds[0].removed, before.vertexCount() - 1);  // the copy goes, p stays
+  EXPECT_EQ(r.filledCount(), 2);                            // the two halves of the eight
+  ASSERT_EQ(r.holes.size(), 3u);
+  int newVertices = 0;
+  for (const HoleReport& h : r.holes) {
+    if (!h.filled) continue;
+    EXPECT_EQ(h.borderEdges, 8);
+    EXPECT_TRUE(h.reason.empty()) << h.reason;
+    newVertices += h.newVertices;
+  }
+  // Every other original vertex and every original face corner is kept; the copy's faces use p.
+  const int kept = before.vertexCount() - 1;
+  ASSERT_EQ(mesh.vertexCount(), kept + newVertices);
+  for (int i = 0; i < kept; ++i) EXPECT_EQ(mesh.positions[i], before.positions[i]) << i;
+  for (int f = 0; f < before.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int v = before.faces[f][k];
+      EXPECT_EQ(mesh.faces[f][k], v == r.welds[0].removed ? r.welds[0].kept : v) << f;
+    }
+  // One surface again: manifold everywhere, only the rim open, no sliver where the eight crossed.
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  EXPECT_EQ(topo.nonManifoldVertexCount(), 0);
+  EXPECT_EQ(topo.inconsistentEdgeCount(), 0);
+  EXPECT_EQ(topo.boundaryEdgeCount(), 48);
+  EXPECT_EQ(topo.eulerCharacteristic(), 1);  // a disc
+  EXPECT_GE(smallestAngleDegrees(mesh, before.faceCount()), 20);
+  EXPECT_EQ(selfIntersections(mesh), 0);
+  // The patches lie on the unit sphere (fixed surroundings on it, elastica keeps spheres).
+  for (int i = kept; i < mesh.vertexCount(); ++i) EXPECT_NEAR(mesh.positions[i].norm(), 1, 0.01) << i;
+}
+
+// What the CLI and the plugin do with a vcglib mesh: weld as the fill did, then append.
+TEST(HoleFilling, WeldsAndNewElementsCarryOverToAVcgMesh) {
+  TriMesh mesh = sphericalPatchWithPinchedHole();
+  VcgMesh vm;
+  fromTriMesh(mesh, vm);
+  HoleFillOptions opt;
+  opt.maxHoleEdges = 20;
+  const HoleFillReport r = fillHoles(mesh, nullptr, opt);
+  ASSERT_EQ(r.welds.size(), 1u);
+  applyWelds(r.welds, vm);
+  ASSERT_TRUE(appendNewElements(mesh, vm));
+  const TriMesh back = toTriMesh(vm);
+  EXPECT_EQ(back.faces, mesh.faces);
+  EXPECT_EQ(back.positions, mesh.positions);
+}
+
+TEST(HoleFilling, CopiesOfAPointStaySeparateWhereTheirHolesStayOpen) {
+  TriMesh mesh = sphericalPatchWithPinchedHole();
+  const TriMesh before = mesh;
+  HoleFillOptions opt;
+  opt.maxHoleEdges = 7;  // both halves of the eight (8 edges each) too large
+  const HoleFillReport r = fillHoles(mesh, nullptr, opt);
+  EXPECT_EQ(r.filledCount(), 0);
+  EXPECT_TRUE(r.welds.empty());
+  EXPECT_EQ(mesh.positions, before.positions);
+  EXPECT_EQ(mesh.faces, before.faces);
 }
 
 TEST(HoleFilling, NonManifoldInputIsRefusedUnchanged) {

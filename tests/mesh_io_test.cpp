@@ -95,6 +95,27 @@ TEST(MeshIo, OffAndStl) {
   EXPECT_EQ(r.duplicateVerticesMerged, 2);
 }
 
+// A face selection as MeshLab saves it (the flags bit) or as a plain `selected` property.
+TEST(MeshIo, PlyFaceSelectionFromFlagsOrASelectedProperty) {
+  test::ScratchDir dir("io-selection");
+  const std::string vertices = "element vertex 4\nproperty float x\nproperty float y\nproperty float z\n";
+  const std::string body = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+  test::writeText(dir.file("p.ply"), "ply\nformat ascii 1.0\n" + vertices +
+                                         "element face 2\nproperty list uchar int vertex_indices\nproperty uchar selected\n"
+                                         "end_header\n" + body + "3 0 1 2 1\n3 0 2 3 0\n");
+  test::writeText(dir.file("f.ply"), "ply\nformat ascii 1.0\n" + vertices +
+                                         "element face 2\nproperty list uchar int vertex_indices\nproperty int flags\n"
+                                         "end_header\n" + body + "3 0 1 2 0\n3 0 2 3 32\n");
+  for (const auto& [file, selectedFace] : {std::pair{"p.ply", 0}, std::pair{"f.ply", 1}}) {
+    VcgMesh m;
+    const io::ReadReport r = io::readMesh(dir.file(file), m);
+    EXPECT_TRUE(r.hasFaceSelection) << file;
+    ASSERT_EQ(m.face.size(), 2u);
+    EXPECT_TRUE(m.face[selectedFace].IsS()) << file;
+    EXPECT_FALSE(m.face[1 - selectedFace].IsS()) << file;
+  }
+}
+
 TEST(MeshIo, ClearErrors) {
   ScratchDir dir("errors");
   EXPECT_NE(errorOf(dir.file("missing.ply")).find("no such file"), std::string::npos);

@@ -163,6 +163,10 @@ FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress&
     if (!h.reason.empty()) line += "; " + h.reason;
     r.log.push_back(line);
   }
+  if (!report.welds.empty())
+    r.log.push_back("merged " + std::to_string(report.welds.size()) +
+                    " pairs of vertex copies at one point where a patch joined their fans");
+  r.welds = report.welds;
   r.log.push_back("filled " + std::to_string(report.filledCount()) + " of " + std::to_string(report.holes.size()) +
                   " holes in " + number(report.seconds, "%.2f") + " s");
   r.mesh = std::move(mesh);

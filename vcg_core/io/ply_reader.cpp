@@ -200,10 +200,11 @@ void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadR
               z = isVertex ? findProperty(e, {"z"}, false) : -1;
     const int idx = isFace ? findProperty(e, {"vertex_indices", "vertex_index"}, true) : -1;
     const int flags = isFace ? findProperty(e, {"flags"}, false) : -1;
+    const int selectedProperty = isFace ? findProperty(e, {"selected"}, false) : -1;  // non-zero: selected
     if (isVertex && e.count > 0 && (x < 0 || y < 0 || z < 0)) fail(path, "PLY vertex element without x, y and z properties");
     if (isFace && e.count > 0 && idx < 0) fail(path, "PLY face element without a vertex_indices list");
     if (isFace && vertexCount < 0) fail(path, "PLY face element before the vertex element");
-    if (isFace) report.hasFaceSelection = flags >= 0;
+    if (isFace) report.hasFaceSelection = flags >= 0 || selectedProperty >= 0;
     for (long long i = 0; i < e.count; ++i) {
       const std::string where = e.name + " " + std::to_string(i);
       double p[3] = {0, 0, 0};
@@ -216,7 +217,8 @@ void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadR
           if (k == x) p[0] = v;
           if (k == y) p[1] = v;
           if (k == z) p[2] = v;
-          if (k == flags) sel = (static_cast<long long>(v) & VcgFace::SELECTED) != 0;
+          if (k == flags) sel = sel || (static_cast<long long>(v) & VcgFace::SELECTED) != 0;
+          if (k == selectedProperty) sel = sel || v != 0;
           continue;
         }
         const double n = body.read(prop.countType, where);

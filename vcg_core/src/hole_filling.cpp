@@ -3,6 +3,7 @@
 #include <elastica/fairing.h>
 #include <elastica/hole_boundary.h>
 #include <elastica/hole_filling.h>
+#include <elastica/hole_pinches.h>
 #include <elastica/hole_triangulation.h>
 #include <elastica/mesh_quality.h>
 #include <elastica/submesh.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 
 namespace elastica {
 namespace {
@@ -82,6 +84,118 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   }
 }
 
+// Welds `removed` into `kept` (two copies of one point on a hole border) unless an edge would then
+// have more than two faces. `adjacency` follows.
+bool weldCopies(TriMesh& mesh, VertexFaces& adjacency, int kept, int removed) {
+  auto facesOnEdge = [&](int a, int b) {
+    int count = 0;
+    for (int f : adjacency[a]) {
+      const Face& t = mesh.faces[f];
+      count += t[0] == b || t[1] == b || t[2] == b;
+    }
+    return count;
+  };
+  for (int f : adjacency[removed]) {
+    for (int x : mesh.faces[f]) {
+      if (x == removed) continue;
+      if (x == kept) return false;  // an edge between the copies: a face would lose its area
+      if (facesOnEdge(kept, x) + facesOnEdge(removed, x) > 2) return false;
+    }
+  }
+  for (int f : adjacency[removed]) {
+    for (int& x : mesh.faces[f]) x = x == removed ? kept : x;
+    adjacency[kept].push_back(f);
+  }
+  adjacency[removed].clear();
+  return true;
+}
+
+// The faces around `v` grouped into fans (faces joined across an edge at v), each in face order.
+std::vector<std::vector<int>> fansAround(const TriMesh& mesh, const std::vector<int>& faces, int v) {
+  const int n = static_cast<int>(faces.size());
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, local face)
+  for (int i = 0; i < n; ++i)
+    for (int x : mesh.faces[faces[i]])
+      if (x != v) spokes.emplace_back(x, i);
+  std::sort(spokes.begin(), spokes.end());
+  for (std::size_t k = 1; k < spokes.size(); ++k)
+    if (spokes[k].first == spokes[k - 1].first) parent[root(spokes[k].second)] = root(spokes[k - 1].second);
+  std::vector<std::vector<int>> fans;
+  std::vector<int> fanOf(n, -1);
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return faces[a] < faces[b]; });
+  for (int i : order) {
+    int& fan = fanOf[root(i)];
+    if (fan < 0) {
+      fan = static_cast<int>(fans.size());
+      fans.emplace_back();
+    }
+    fans[fan].push_back(faces[i]);
+  }
+  return fans;
+}
+
+// A weld as made: the faces the removed copy had then, and those the kept vertex had before its
+// first weld.
+struct WeldRecord {
+  PinchWeld weld;
+  std::vector<int> removedFaces, keptFaces;
+};
+
+// After filling: where the patches did not join a copy's fan to the kept vertex's own faces (its
+// holes stayed open), that fan gets its copy back. The copies still unused are then dropped (later
+// vertices move down). Returns the welds that stand.
+std::vector<PinchWeld> settleWelds(TriMesh& mesh, VertexFaces& adjacency, const std::vector<WeldRecord>& welds) {
+  std::vector<PinchWeld> standing;
+  std::vector<std::vector<int>> fans;
+  int fansOf = -1;
+  std::vector<char> fanTaken;
+  for (const WeldRecord& w : welds) {
+    const int p = w.weld.kept, q = w.weld.removed;
+    if (fansOf != p) {
+      fans = fansAround(mesh, adjacency[p], p);
+      fansOf = p;
+      fanTaken.assign(fans.size(), 0);
+    }
+    auto fanOf = [&](int face) {
+      for (std::size_t k = 0; k < fans.size(); ++k)
+        if (std::find(fans[k].begin(), fans[k].end(), face) != fans[k].end()) return k;
+      return fans.size();
+    };
+    const std::size_t fan = fanOf(w.removedFaces.front());
+    const bool joined = std::any_of(w.keptFaces.begin(), w.keptFaces.end(), [&](int f) { return fanOf(f) == fan; });
+    if (joined || fan == fans.size() || fanTaken[fan]) {  // taken: joined to an earlier copy, which stays
+      standing.push_back(w.weld);
+      continue;
+    }
+    fanTaken[fan] = 1;
+    for (int f : fans[fan]) {
+      for (int& x : mesh.faces[f]) x = x == p ? q : x;
+      adjacency[q].push_back(f);
+    }
+  }
+  std::vector<char> drop(mesh.positions.size(), 0);
+  for (const PinchWeld& w : standing) drop[w.removed] = 1;
+  std::vector<int> newIndex(mesh.positions.size(), -1);
+  int next = 0;
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (drop[i]) continue;
+    newIndex[i] = next;
+    mesh.positions[next++] = mesh.positions[i];
+  }
+  mesh.positions.resize(next);
+  for (Face& t : mesh.faces)
+    for (int& x : t) x = newIndex[x];
+  return standing;
+}
+
 void validate(const HoleFillOptions& opt) {
   if (opt.maxHoleEdges < 3) throw InvalidInputError("fill: the largest hole to fill must have at least 3 border edges");
   if (!(opt.refinement.density > 0)) throw InvalidInputError("fill: the refinement density must be > 0");
@@ -111,7 +225,22 @@ HoleFillReport fillHoles(TriMesh& output, std::vector<std::uint8_t>* newFaceFlag
   };
 
   HoleFillReport report;
-  for (const HoleLoop& loop : findHoleLoops(topo)) {
+  std::vector<WeldRecord> welds;
+  std::vector<HoleLoop> loops;
+  for (const HoleLoop& found : findHoleLoops(topo)) {
+    PinchSplit split = splitAtPinches(found, mesh.positions, [&](int kept, int removed) {
+      WeldRecord w{{kept, removed}, adjacency[removed], adjacency[kept]};
+      for (const WeldRecord& earlier : welds)
+        if (earlier.weld.kept == kept) w.keptFaces = earlier.keptFaces;
+      if (!weldCopies(mesh, adjacency, kept, removed)) return false;
+      welds.push_back(std::move(w));
+      return true;
+    });
+    for (HoleLoop& loop : split.loops) loops.push_back(std::move(loop));
+  }
+  // Settled per kept vertex, in the order the welds were made.
+  std::stable_sort(welds.begin(), welds.end(), [](const WeldRecord& a, const WeldRecord& b) { return a.weld.kept < b.weld.kept; });
+  for (const HoleLoop& loop : loops) {
     const auto holeStart = std::chrono::steady_clock::now();
     HoleReport hole;
     hole.borderEdges = loop.edgeCount();
@@ -179,6 +308,7 @@ HoleFillReport fillHoles(TriMesh& output, std::vector<std::uint8_t>* newFaceFlag
     report.holes.push_back(hole);
     if (hole.stop == StopReason::Cancelled) break;  // the caller's progress callback said stop
   }
+  report.welds = settleWelds(mesh, adjacency, welds);
   if (newFaceFlags) {
     newFaceFlags->assign(mesh.faces.size(), 0);
     std::fill(newFaceFlags->begin() + originalFaces, newFaceFlags->end(), 1);

@@ -24,6 +24,10 @@ struct Weight {
   }
 };
 
+// Twice a triangle's area relative to its longest edge squared below which it counts as degenerate
+// (its smallest angle is then below about 1e-10 degrees).
+constexpr double kDegenerate = 1e-12;
+
 Vec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 n = (b - a).cross(c - a);
   const double len = n.norm();
@@ -71,9 +75,13 @@ std::optional<std::vector<Face>> triangulateHole(const std::vector<Vec3>& positi
           const Weight& left = m - i > 1 ? W[at(i, m)] : Weight{};
           const Weight& right = k - m > 1 ? W[at(m, k)] : Weight{};
           if (!left.valid() || !right.valid()) continue;
+          // A triangle without area (two copies of a vertex at one point, or three points on a
+          // line) would be a sliver no later stage can repair: never use one.
+          const double twiceArea = (P(m) - P(i)).cross(P(k) - P(i)).norm();
+          const double longest = std::max({(P(m) - P(i)).squaredNorm(), (P(k) - P(m)).squaredNorm(), (P(i) - P(k)).squaredNorm()});
+          if (!(twiceArea > kDegenerate * longest)) continue;
           const Vec3 nt = unitNormal(P(i), P(m), P(k));
-          Weight w{std::min(nt.dot(N[at(i, m)]), nt.dot(N[at(m, k)])),
-                   0.5 * (P(m) - P(i)).cross(P(k) - P(i)).norm()};
+          Weight w{std::min(nt.dot(N[at(i, m)]), nt.dot(N[at(m, k)])), 0.5 * twiceArea};
           // The whole polygon: its closing edge (0, n−1) borders a mesh face too.
           if (i == 0 && k == n - 1) w.minCos = std::min(w.minCos, nt.dot(outsideNormal[n - 1]));
           w = w + left + right;

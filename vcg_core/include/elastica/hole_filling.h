@@ -5,6 +5,7 @@
 #pragma once
 
 #include <elastica/flow.h>
+#include <elastica/hole_pinches.h>
 #include <elastica/patch_refinement.h>
 #include <elastica/types.h>
 
@@ -59,12 +60,19 @@ struct HoleReport {
 
 struct HoleFillReport {
   std::vector<HoleReport> holes;
+  /// Copies of one point on a hole border (a bow-tie vertex stored once per fan) merged into one
+  /// vertex because a patch closed the gap between their fans, in the input's vertex numbers.
+  /// The removed copies are gone from the output; the vertices after each move down by one.
+  std::vector<PinchWeld> welds;
   int filledCount() const;
   double seconds = 0;
 };
 
 /// Fills the holes of `mesh` with at most opt.maxHoleEdges border edges. Original vertices and
-/// faces keep their indices and values bit for bit; new vertices and faces are appended.
+/// faces keep their order and values bit for bit, and new vertices and faces are appended, with
+/// one exception: a hole border that passes twice through one point (two copies of a vertex,
+/// one per fan of faces) is split there into two holes, and the copies become one vertex where a
+/// patch joins their fans (HoleFillReport::welds; hole_pinches.h).
 /// `newFaceFlags` (optional) is resized to the face count, 1 on new faces and 0 elsewhere.
 /// A hole whose flow fails keeps its bi-Laplace patch; its report says so.
 /// @throws InvalidInputError on non-manifold edges or invalid options; the mesh is then unchanged.

@@ -3,6 +3,7 @@
 // mesh: copy in, compute in double, write back once.
 #pragma once
 
+#include <elastica/hole_pinches.h>
 #include <elastica/sign_convention.h>
 #include <elastica/types.h>
 
@@ -74,6 +75,26 @@ bool appendNewElements(const TriMesh& mesh, VcgMeshT& m) {
     }
   }
   return true;
+}
+
+/// Does to `m` what fillHoles did to a TriMesh copy of it when it welded copies of one point
+/// (HoleFillReport::welds, in `m`'s vertex order): faces on each removed copy move to the kept
+/// vertex, the removed copies are deleted, and `m` is compacted. Call before appendNewElements.
+/// `m` must be compact.
+template <class VcgMeshT>
+void applyWelds(const std::vector<PinchWeld>& welds, VcgMeshT& m) {
+  if (welds.empty()) return;
+  std::vector<int> target(m.vert.size(), -1);
+  for (const PinchWeld& w : welds) target[w.removed] = w.kept;
+  for (auto& f : m.face) {
+    if (f.IsD()) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int to = target[vcg::tri::Index(m, f.V(k))];
+      if (to >= 0) f.V(k) = &m.vert[to];
+    }
+  }
+  for (const PinchWeld& w : welds) vcg::tri::Allocator<VcgMeshT>::DeleteVertex(m, m.vert[w.removed]);
+  vcg::tri::Allocator<VcgMeshT>::CompactVertexVector(m);
 }
 
 /// Writes positions back into the live vertices of `m` (same order as toTriMesh).

@@ -42,6 +42,7 @@ std::vector<std::string> applyFilter(FilterId id, VcgMeshT& m, const ParamValues
     // Append the new vertices and faces; the original ones keep their attributes. Compacting
     // makes vcg indices the TriMesh indices (toTriMesh skips deleted elements).
     vcg::tri::Allocator<VcgMeshT>::CompactEveryVector(m);
+    applyWelds(r.welds, m);
     const size_t nf = m.face.size();
     if (!appendNewElements(r.mesh, m)) throw Error("fill: the mesh changed under the filter; nothing written");
     if (v.getBool("NewFaceSelected")) {  // as MeshLab's Close Holes: only the new faces selected

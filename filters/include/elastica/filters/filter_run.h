@@ -58,6 +58,7 @@ struct FillHolesResult {
   TriMesh mesh;
   int originalVertices = 0, originalFaces = 0;
   std::vector<std::uint8_t> newFaces;  ///< 1 on new faces
+  std::vector<PinchWeld> welds;        ///< copies of a point merged (HoleFillReport::welds)
   std::vector<std::string> log;        ///< one line per hole, and a total
 };
 
