@@ -260,6 +260,21 @@ TEST(EdgeFlips, MakeTheMovingRegionDelaunay) {
   }
 }
 
+// Two quads whose far corners coincide (c above and d below a long, narrow rectangle: both long
+// sides are non-Delaunay, both would become edge c–d). One pass must not flip both: the second
+// flip would give c–d four faces.
+TEST(EdgeFlips, NeverCreateAnEdgeTwice) {
+  TriMesh m;
+  m.positions = {{0, 0, 0.05}, {0, 0, -0.05}, {0.3, -1, 0}, {0.3, 1, 0}, {-0.3, 1, 0}, {-0.3, -1, 0}};
+  m.faces = {{2, 3, 0}, {3, 4, 0}, {4, 5, 0}, {5, 2, 0}, {3, 2, 1}, {4, 3, 1}, {5, 4, 1}, {2, 5, 1}};
+  const int flips = flipToDelaunay(m, std::vector<std::uint8_t>(6, 1));
+  EXPECT_EQ(flips, 1);
+  const Topology t(m.vertexCount(), m.faces);  // throws on a non-manifold edge
+  EXPECT_EQ(t.edgeCount(), 12);
+  EXPECT_EQ(t.boundaryEdgeCount(), 0);
+  EXPECT_EQ(t.inconsistentEdgeCount(), 0);
+}
+
 TEST(Subdivision, KeepsOldVerticesAndQuadruplesFaces) {
   TriMesh m = test::jittered(shapes::torus(3, 1, 12, 6), 0.1, 9);
   const TriMesh before = m;
