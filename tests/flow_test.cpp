@@ -408,6 +408,30 @@ TEST(SemiImplicit, FixedVerticesAreBitIdentical) {
   }
 }
 
+// The tangential drift after an accepted step obeys the step's rules (no face turned over, E not
+// above the step's allowance): on the subdivided tubular cage an unchecked drift pass once folded
+// the mesh and lifted E from 523 to 10⁶ in one "accepted" step.
+TEST(SemiImplicit, DriftKeepsTheStepRules) {
+  TriMesh m = shapes::frameCage(2, 1);
+  subdivideMidpoint(m);
+  FlowOptions opt;
+  opt.scheme = Scheme::SemiImplicit;
+  opt.subdivisionLevels = 1;
+  opt.maxSteps = 300;
+  std::vector<std::pair<int, double>> seen;  // (level, E) after every accepted step
+  opt.progress = [&](const FlowProgress& p) {
+    seen.emplace_back(p.level, p.energy);
+    return true;
+  };
+  fair(m, nullptr, opt);
+  ASSERT_GT(seen.size(), 20u);
+  EXPECT_EQ(seen.back().first, 1);
+  for (size_t k = 1; k < seen.size(); ++k) {
+    if (seen[k].first != seen[k - 1].first) continue;  // subdivision changes E
+    EXPECT_LE(seen[k].second, seen[k - 1].second * (1 + 1e-4) + 1e-9) << "accepted step " << k;
+  }
+}
+
 TEST(SemiImplicit, BilaplacianIsExplicitOnly) {
   TriMesh m = shapes::icosphere(1.0, 1);
   FlowOptions opt;
