@@ -17,6 +17,7 @@ struct GenerateArgs {
   double radius = 1, major = 3, minor = 1, spacing = 1, noise = 0;
   unsigned seed = 1;
   int level = -1;  // shape's default
+  int window = 2;  // frame: cells per window side
   std::vector<int> segments;
   bool ascii = false;
 };
@@ -28,7 +29,7 @@ void runGenerate(const GenerateArgs& a) {
   if (a.shape == "icosphere") mesh = shapes::icosphere(a.radius, a.level < 0 ? 4 : a.level);
   else if (a.shape == "torus") mesh = shapes::torus(a.major, a.minor, seg(0, 64), seg(1, 32));
   else if (a.shape == "frame") {
-    mesh = shapes::frameCage(seg(0, 2), seg(1, 1));
+    mesh = shapes::frameCage(seg(0, 2), seg(1, 1), a.window);
     for (int l = 0; l < (a.level < 0 ? 1 : a.level); ++l) subdivideMidpoint(mesh);
   }
   else mesh = shapes::grid(seg(0, 10), seg(1, 10), a.spacing);
@@ -63,6 +64,9 @@ void addGenerateCommand(CLI::App& app) {
       ->delimiter(',')
       ->expected(1, 2);
   cmd->add_option("--spacing", args->spacing, "grid spacing")->capture_default_str();
+  cmd->add_option("--window", args->window, "frame: side of each window in tube widths")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   cmd->add_option("--noise", args->noise,
                   "move each vertex radially from the origin by a random factor in [1-A, 1+A] (e.g. 0.05)")
       ->check(CLI::Range(0.0, 0.9));

@@ -12,5 +12,6 @@ void addGenerateCommand(CLI::App& app);
 void addFairCommand(CLI::App& app);
 void addFillCommand(CLI::App& app);
 void addRunCommand(CLI::App& app);
+void addSubdivideCommand(CLI::App& app);
 
 }  // namespace elastica::cli

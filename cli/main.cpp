@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   elastica::cli::addFillCommand(app);
   elastica::cli::addGenerateCommand(app);
   elastica::cli::addRunCommand(app);
+  elastica::cli::addSubdivideCommand(app);
 
   try {
     app.parse(argc, argv);  // runs the chosen subcommand's callback

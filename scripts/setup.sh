@@ -30,6 +30,8 @@ PACKAGES=(
   libtinyxml2-dev                                      # .mlx filter scripts (elastica run)
   xdotool                                              # the plugin's GUI test finds MeshLab's dialog
   imagemagick                                          # ... and screenshots it (import)
+  f3d                                                  # headless renders for docs (bench/render_mesh.sh)
+  gnuplot-nox jq                                       # energy curves from the JSON reports (bench/paper_figures.sh)
 )
 
 log() { printf 'setup: %s\n' "$*" >&2; }

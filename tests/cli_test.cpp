@@ -260,6 +260,27 @@ TEST(Cli, FairSelectedFacesFromAnIndexFile) {
                         dir.file("cap.txt")).exitCode, 2);  // one or the other
 }
 
+// `generate frame --window` sets the window size; `subdivide` splits every triangle 1-to-4 and keeps
+// the old vertices where they were (V' = V + E, F' = 4F on a closed mesh).
+TEST(Cli, FrameWindowAndSubdivide) {
+  ScratchDir dir("cli-subdivide");
+  ASSERT_EQ(runElastica("generate frame --level 0 --ascii -o " + dir.file("w2.ply")).exitCode, 0);
+  ASSERT_EQ(runElastica("generate frame --level 0 --window 4 --ascii -o " + dir.file("w4.ply")).exitCode, 0);
+  const test::AsciiPly w2 = test::readAsciiPly(dir.file("w2.ply")), w4 = test::readAsciiPly(dir.file("w4.ply"));
+  EXPECT_GT(w4.faceCount, w2.faceCount);  // longer tubes around bigger windows
+  const CommandResult run = runElastica("subdivide " + dir.file("w4.ply") + " --levels 2 --ascii -o " + dir.file("s.ply"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const test::AsciiPly s = test::readAsciiPly(dir.file("s.ply"));
+  EXPECT_EQ(s.faceCount, 16 * w4.faceCount);
+  // Genus 2: V − E + F = −2 with E = 3F/2, so each level adds E vertices.
+  const auto edges = [](const test::AsciiPly& m) { return 3 * m.faceCount / 2; };
+  EXPECT_EQ(static_cast<int>(w4.vertices.size()) - edges(w4) + w4.faceCount, -2);
+  EXPECT_EQ(static_cast<int>(s.vertices.size()) - edges(s) + s.faceCount, -2);
+  for (size_t v = 0; v < w4.vertices.size(); ++v)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(s.vertices[v][c], w4.vertices[v][c]) << v;
+  EXPECT_EQ(runElastica("subdivide " + dir.file("w4.ply") + " --levels 0 -o " + dir.file("t.ply")).exitCode, 2);
+}
+
 TEST(Cli, HelpForProgramAndSubcommands) {
   CommandResult run = runElastica("--help");
   EXPECT_EQ(run.exitCode, 0);

@@ -260,6 +260,21 @@ TEST(EdgeFlips, MakeTheMovingRegionDelaunay) {
   }
 }
 
+// Two quads whose far corners coincide (c above and d below a long, narrow rectangle: both long
+// sides are non-Delaunay, both would become edge c–d). One pass must not flip both: the second
+// flip would give c–d four faces.
+TEST(EdgeFlips, NeverCreateAnEdgeTwice) {
+  TriMesh m;
+  m.positions = {{0, 0, 0.05}, {0, 0, -0.05}, {0.3, -1, 0}, {0.3, 1, 0}, {-0.3, 1, 0}, {-0.3, -1, 0}};
+  m.faces = {{2, 3, 0}, {3, 4, 0}, {4, 5, 0}, {5, 2, 0}, {3, 2, 1}, {4, 3, 1}, {5, 4, 1}, {2, 5, 1}};
+  const int flips = flipToDelaunay(m, std::vector<std::uint8_t>(6, 1));
+  EXPECT_EQ(flips, 1);
+  const Topology t(m.vertexCount(), m.faces);  // throws on a non-manifold edge
+  EXPECT_EQ(t.edgeCount(), 12);
+  EXPECT_EQ(t.boundaryEdgeCount(), 0);
+  EXPECT_EQ(t.inconsistentEdgeCount(), 0);
+}
+
 TEST(Subdivision, KeepsOldVerticesAndQuadruplesFaces) {
   TriMesh m = test::jittered(shapes::torus(3, 1, 12, 6), 0.1, 9);
   const TriMesh before = m;
@@ -390,6 +405,30 @@ TEST(SemiImplicit, FixedVerticesAreBitIdentical) {
     const int i = v % 13, j = v / 13;
     if (i <= 1 || j <= 1 || i >= 11 || j >= 11)
       EXPECT_EQ(std::memcmp(m.positions[v].data(), before.positions[v].data(), sizeof(Vec3)), 0) << v;
+  }
+}
+
+// The tangential drift after an accepted step obeys the step's rules (no face turned over, E not
+// above the step's allowance): on the subdivided tubular cage an unchecked drift pass once folded
+// the mesh and lifted E from 523 to 10⁶ in one "accepted" step.
+TEST(SemiImplicit, DriftKeepsTheStepRules) {
+  TriMesh m = shapes::frameCage(2, 1);
+  subdivideMidpoint(m);
+  FlowOptions opt;
+  opt.scheme = Scheme::SemiImplicit;
+  opt.subdivisionLevels = 1;
+  opt.maxSteps = 300;
+  std::vector<std::pair<int, double>> seen;  // (level, E) after every accepted step
+  opt.progress = [&](const FlowProgress& p) {
+    seen.emplace_back(p.level, p.energy);
+    return true;
+  };
+  fair(m, nullptr, opt);
+  ASSERT_GT(seen.size(), 20u);
+  EXPECT_EQ(seen.back().first, 1);
+  for (size_t k = 1; k < seen.size(); ++k) {
+    if (seen[k].first != seen[k - 1].first) continue;  // subdivision changes E
+    EXPECT_LE(seen[k].second, seen[k - 1].second * (1 + 1e-4) + 1e-9) << "accepted step " << k;
   }
 }
 

@@ -2,6 +2,8 @@
 #include <elastica/topology.h>
 
 #include <algorithm>
+#include <set>
+#include <utility>
 
 namespace elastica {
 namespace {
@@ -28,6 +30,10 @@ int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
   for (int pass = 0; pass < maxPasses; ++pass) {
     const Topology topo(mesh.vertexCount(), mesh.faces);
     std::vector<std::uint8_t> touched(mesh.faces.size(), 0);
+    // Edges this pass created: `topo` predates them, and two quads can share their far corners
+    // (on a thin tube, c and d are both neighbours of a, b and of a', b'): the second flip would
+    // make c–d an edge of four faces.
+    std::set<std::pair<int, int>> created;
     int flips = 0;
     for (int e = 0; e < topo.edgeCount(); ++e) {
       const auto& oc = topo.edgeOppositeCorners(e);
@@ -41,7 +47,7 @@ int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
       if (angleAt(p[c], p[a], p[b]) + angleAt(p[d], p[a], p[b]) <= M_PI + kAngleSlack) continue;
       bool exists = false;
       for (int k = topo.ringBegin(c); k < topo.ringEnd(c) && !exists; ++k) exists = topo.ringVertex(k) == d;
-      if (exists) continue;
+      if (exists || created.count(std::minmax(c, d))) continue;
       // New faces (a, d, c) and (d, b, c): same orientation as the old pair, or no flip.
       const Vec3 before = (p[b] - p[a]).cross(p[c] - p[a]) + (p[a] - p[b]).cross(p[d] - p[b]);
       const Vec3 n1 = (p[d] - p[a]).cross(p[c] - p[a]), n2 = (p[b] - p[d]).cross(p[c] - p[d]);
@@ -49,6 +55,7 @@ int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
       mesh.faces[f0] = {a, d, c};
       mesh.faces[f1] = {d, b, c};
       touched[f0] = touched[f1] = 1;
+      created.insert(std::minmax(c, d));
       ++flips;
     }
     total += flips;

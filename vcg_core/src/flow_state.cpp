@@ -242,6 +242,7 @@ bool FlowState::trySemiImplicitStep(double tau) {
   const Eigen::VectorXd delta = solver_->ldlt.solve(rhs);
 
   const double energyBefore = energy_;
+  const double energyLimit = energyBefore * (1 + kEnergySlack) + 1e-12;
   faceNormalBefore_ = geo_.faceNormal;
   for (int v = 0; v < nv; ++v) {
     const int r = freeIndex_[v];
@@ -254,29 +255,42 @@ bool FlowState::trySemiImplicitStep(double tau) {
     mesh_.positions[v] += delta[r] * geo_.vertexNormal[v];
   }
   evaluated_ = false;
-  evaluate();
-  if (!std::isfinite(energy_)) return reject();
-  // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
-  if (opt_.flow == FlowType::Elastica && energy_ > energyBefore * (1 + kEnergySlack) + 1e-12)
-    return reject();
-  for (int f = 0; f < topo_.faceCount(); ++f)
-    if (roles_.activeFace[f] && geo_.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return reject();
+  if (!acceptable(energyLimit)) return reject();
 
-  for (int pass = 0; pass < opt_.driftPasses && opt_.tangentialDrift; ++pass) driftPass();
+  // The drift is held to the same rules: a pass that folds a face or lifts the energy above what
+  // the step allowed is undone (and the passes stop), so the step's checks cannot be undone by it.
+  for (int pass = 0; pass < opt_.driftPasses && opt_.tangentialDrift; ++pass)
+    if (!driftPass(energyLimit)) break;
   slideBoundary();
   evaluated_ = false;
   return true;
 }
 
-void FlowState::driftPass() {
+bool FlowState::acceptable(double energyLimit) {
+  evaluate();
+  if (!std::isfinite(energy_)) return false;
+  // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
+  if (opt_.flow == FlowType::Elastica && energy_ > energyLimit) return false;
+  for (int f = 0; f < topo_.faceCount(); ++f)
+    if (roles_.activeFace[f] && geo_.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return false;
+  return true;
+}
+
+bool FlowState::driftPass(double energyLimit) {
   evaluate();
   const double eps = opt_.driftFactor * activeMinArea_;
   tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, u_, drift_);
+  driftSaved_ = mesh_.positions;
+  faceNormalBefore_ = geo_.faceNormal;
   const int nv = topo_.vertexCount();
 #pragma omp parallel for schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i)
     if (roles_.free[i]) mesh_.positions[i] += eps * drift_[i];
   evaluated_ = false;
+  if (acceptable(energyLimit)) return true;
+  mesh_.positions = driftSaved_;
+  evaluated_ = false;
+  return false;
 }
 
 }  // namespace elastica

@@ -66,7 +66,11 @@ class FlowState {
   void speed(std::vector<double>& F);
   void buildConnectivity();
   void normalizeArea(double area);
-  void driftPass();
+  /// Evaluates the moved positions: finite energy, at most `energyLimit` (elastica), no active
+  /// face turned over since faceNormalBefore_.
+  bool acceptable(double energyLimit);
+  /// One tangential drift pass; undone (returns false) if the result is not acceptable().
+  bool driftPass(double energyLimit);
 
   TriMesh mesh_;
   FlowOptions opt_;
@@ -82,7 +86,7 @@ class FlowState {
   double energy_ = 0, activeArea_ = 0, activeMinArea_ = 0;
   std::vector<Vec3> lp_, u_, drift_;
   std::vector<double> lh_, speed_, delta_;
-  std::vector<Vec3> saved_, faceNormalBefore_;
+  std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_;
   std::vector<int> freeIndex_;  // vertex → row of the semi-implicit system, or -1
   struct SparseSolver;          // Eigen's factorisation, pattern analysed once per topology
   std::shared_ptr<SparseSolver> solver_;

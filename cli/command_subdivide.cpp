@@ -1,0 +1,51 @@
+// `elastica subdivide IN -o OUT.ply [--levels N]`: linear 1-to-4 subdivision (every triangle split
+// at its edge midpoints; no vertex moves). The step of `fair --subdivide` on its own, for
+// coarse-to-fine schedules a script drives stage by stage (bench/paper_figures.sh).
+#include "commands.h"
+#include "mesh_files.h"
+
+#include <elastica/subdivision.h>
+#include <elastica/vcg_adapter.h>
+
+#include <cstdio>
+
+namespace elastica::cli {
+namespace {
+
+struct SubdivideArgs {
+  std::string input, output;
+  int levels = 1;
+  bool ascii = false;
+};
+
+void runSubdivide(const SubdivideArgs& a) {
+  io::checkOutputPath(a.output, a.input);
+  VcgMesh vm;
+  loadMesh(a.input, vm);
+  TriMesh mesh = toTriMesh(vm);
+  const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
+  for (int l = 0; l < a.levels; ++l) subdivideMidpoint(mesh);
+  VcgMesh out;
+  fromTriMesh(mesh, out);
+  io::PlyWriteOptions w;
+  w.binary = !a.ascii;
+  io::writePly(a.output, out, w);
+  std::printf("%s: %s, %s -> %s, %s\nwrote %s\n", a.input.c_str(), plural(inVertices, "vertex").c_str(),
+              plural(inFaces, "face").c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
+              plural(mesh.faceCount(), "face").c_str(), a.output.c_str());
+}
+
+}  // namespace
+
+void addSubdivideCommand(CLI::App& app) {
+  auto args = std::make_shared<SubdivideArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "subdivide", "Linear 1-to-4 subdivision: split every triangle at its edge midpoints (no vertex moves).");
+  cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
+  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("--levels", args->levels, "number of 1-to-4 subdivisions")->capture_default_str()->check(CLI::Range(1, 6));
+  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->callback([args] { runSubdivide(*args); });
+}
+
+}  // namespace elastica::cli
