@@ -27,6 +27,7 @@
 #include <cstring>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -170,11 +171,11 @@ struct Curve {
   double total = 0;
 };
 
-// The first time the curve is within `fraction` of `target` (relative), or a negative value.
-std::pair<double, std::size_t> timeTo(const Curve& c, double target, double fraction) {
+// The first time the curve's energy is at or below `level`, or a negative value.
+double timeTo(const Curve& c, double level) {
   for (std::size_t k = 0; k < c.energy.size(); ++k)
-    if (c.energy[k] <= target + fraction * std::abs(target)) return {c.seconds[k], k};
-  return {-1, 0};
+    if (c.energy[k] <= level) return c.seconds[k];
+  return -1;
 }
 
 Curve curveOf(const FlowReport& r) {
@@ -185,30 +186,51 @@ Curve curveOf(const FlowReport& r) {
   return c;
 }
 
-// Prints one row; returns the target line for it.
+// One pair of columns and a ratio: explicit and semi-implicit seconds to `level`.
+struct Race {
+  double explicitSeconds, semiImplicitSeconds;
+  std::string cells() const;
+  double ratio() const { return explicitSeconds > 0 && semiImplicitSeconds > 0 ? explicitSeconds / semiImplicitSeconds : -1; }
+};
+
+std::string Race::cells() const {
+  char buf[160];
+  if (semiImplicitSeconds < 0) std::snprintf(buf, sizeof buf, "%.3f | not reached | –", explicitSeconds);
+  else if (explicitSeconds < 0) std::snprintf(buf, sizeof buf, "not reached | %.4f | –", semiImplicitSeconds);
+  else std::snprintf(buf, sizeof buf, "%.3f | %.4f | %.0f×", explicitSeconds, semiImplicitSeconds, ratio());
+  return buf;
+}
+
+// Prints one row; returns the target line for it. The converged energy E* is the lowest either run
+// reached; "1 % of E*" is the criterion, "99 % of the decrease" (E − E* ≤ 1 % of E₀ − E*)
+// the meaningful one when the start is already within 1 % of E*.
 std::string compareRow(const char* what, const Curve& ex, const Curve& si, const std::string& note) {
   double target = 1e300;
   for (const Curve* c : {&ex, &si})
     for (double e : c->energy) target = std::min(target, e);
-  const auto [te, ke] = timeTo(ex, target, 0.01);
-  const auto [ts, ks] = timeTo(si, target, 0.01);
-  char explicitCell[64], ratio[64];
-  if (te >= 0) std::snprintf(explicitCell, sizeof explicitCell, "%.3f", te);
-  else std::snprintf(explicitCell, sizeof explicitCell, "> %.1f (not reached)", ex.total);
-  if (te >= 0 && ts > 0) std::snprintf(ratio, sizeof ratio, "%.0f×", te / ts);
-  else if (ts > 0) std::snprintf(ratio, sizeof ratio, "> %.0f×", ex.total / ts);
-  else std::snprintf(ratio, sizeof ratio, "–");
-  std::printf("| %s | %.6g | %.6g / %.6g | %s | %.4f | %s | %lld / %lld | %s |\n", what, target, ex.energy.back(),
-              si.energy.back(), explicitCell, ts, ratio, ex.steps, si.steps, note.c_str());
+  const double e0 = ex.energy.front();
+  const double byEnergy = target + 0.01 * std::abs(target), byDecrease = target + 0.01 * (e0 - target);
+  const Race literal{timeTo(ex, byEnergy), timeTo(si, byEnergy)}, decrease{timeTo(ex, byDecrease), timeTo(si, byDecrease)};
+  std::printf("| %s | %.6g → %.6g | %.6g / %.6g | %s | %s | %lld / %lld | %s |\n", what, e0, target, ex.energy.back(),
+              si.energy.back(), literal.cells().c_str(), decrease.cells().c_str(), ex.steps, si.steps, note.c_str());
   std::fflush(stdout);
-  char line[256];
-  if (ts <= 0) std::snprintf(line, sizeof line, "- %s: the semi-implicit run did not get within 1 %%.", what);
-  else if (te >= 0)
-    std::snprintf(line, sizeof line, "- %s: semi-implicit %.0f× faster to 1 %% against ≥ 100×: %s.", what, te / ts,
-                  te / ts >= 100 ? "met" : "missed");
+  char line[400];
+  const bool trivial = e0 <= byEnergy;
+  const Race& race = trivial ? decrease : literal;
+  const char* criterion = trivial ? "99 % of the energy decrease (the start is already within 1 % of E*)" : "1 % of E*";
+  if (race.semiImplicitSeconds <= 0 && race.explicitSeconds <= 0)
+    std::snprintf(line, sizeof line, "- %s: both runs start within %s.", what, criterion);
+  else if (race.semiImplicitSeconds < 0)
+    std::snprintf(line, sizeof line, "- %s: the semi-implicit run did not get within %s.", what, criterion);
+  else if (race.explicitSeconds > 0)
+    std::snprintf(line, sizeof line, "- %s, to %s: semi-implicit %.0f× faster against ≥ 100×: %s.", what, criterion,
+                  race.ratio(), race.ratio() >= 100 ? "met" : "missed");
   else
-    std::snprintf(line, sizeof line, "- %s: semi-implicit more than %.0f× faster (the explicit run did not get within 1 %% in %.0f s) against ≥ 100×: %s.",
-                  what, ex.total / ts, ex.total, ex.total / ts >= 100 ? "met" : "not shown");
+    std::snprintf(line, sizeof line,
+                  "- %s, to %s: semi-implicit more than %.0f× faster (the explicit run did not get there in %.0f s) "
+                  "against ≥ 100×: %s.",
+                  what, criterion, ex.total / race.semiImplicitSeconds, ex.total,
+                  ex.total / race.semiImplicitSeconds >= 100 ? "met" : "not shown");
   return line;
 }
 
@@ -223,9 +245,10 @@ double aspectRatio(const TriMesh& m) {
 }
 
 int convergence(const std::string& bunny, double explicitSeconds, const std::vector<long>& torusSegments) {
-  std::printf("| case | converged E (lowest seen) | final E explicit / semi-implicit | explicit s to 1 %% | "
-              "semi-implicit s to 1 %% | ratio | steps explicit / semi-implicit | notes |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---|\n");
+  std::printf("| case | E₀ → E* (lowest seen) | final E explicit / semi-implicit | explicit s to 1 %% of E* | "
+              "semi-implicit s | ratio | explicit s to 99 %% of the decrease | semi-implicit s | ratio | "
+              "steps explicit / semi-implicit | notes |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");
   std::vector<std::string> targets;
   {
     const TriMesh torus = shapes::torus(3, 1, static_cast<int>(torusSegments.at(0)), static_cast<int>(torusSegments.at(1)));
@@ -260,7 +283,10 @@ int convergence(const std::string& bunny, double explicitSeconds, const std::vec
       TriMesh m = holed;
       const HoleFillReport r = fillHoles(m, nullptr, o);
       newVertices = r.holes.empty() ? 0 : r.holes[0].newVertices;
-      if (!r.holes.empty()) c.steps = r.holes[0].steps;
+      if (r.holes.empty()) throw std::runtime_error("no hole in " + bunny);
+      c.steps = r.holes[0].steps;
+      c.seconds.insert(c.seconds.begin(), 0.0);  // the flow's start
+      c.energy.insert(c.energy.begin(), r.holes[0].energyBefore);
     }
     char note[160];
     std::snprintf(note, sizeof note, "%d new vertices, the flow on the patch only (after triangulation, refinement, bi-Laplace start)",
@@ -275,9 +301,9 @@ int convergence(const std::string& bunny, double explicitSeconds, const std::vec
 // ---------------------------------------------------------------- factorisation
 
 int factorization(const std::vector<long>& levels) {
-  std::printf("| vertices | nonzeros | assemble ms | SimplicialLDLT analyse ms | factorise ms | solve ms | "
+  std::printf("| vertices | nonzeros | pattern ms | assemble ms | SimplicialLDLT analyse ms | factorise ms | solve ms | "
               "CHOLMOD analyse ms | factorise ms | solve ms | factorise speed-up |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (long level : levels) {
     const TriMesh m = shapes::icosphere(1.0, static_cast<int>(level));
     const Topology topo(m.vertexCount(), m.faces);
@@ -288,17 +314,20 @@ int factorization(const std::vector<long>& levels) {
     const std::vector<std::uint8_t> active(n, 1);
     std::vector<double> speed(n, 1.0);
     const double ell = geo.meanEdgeLength, tau = 0.05 * ell * ell * ell * ell * 1e3;  // a mid-run step
-    std::vector<Eigen::Triplet<double>> trip;
-    Eigen::SparseMatrix<double> K;
-    Eigen::VectorXd rhs, x;
-    const double assemble = timePerRun([&] { assembleSemiImplicitSystem(topo, geo, active, row, n, speed, tau, trip, K, rhs); },
-                                       0.2, 2);
+    SemiImplicitSystem system;
+    auto start = Clock::now();
+    system.assemble(topo, geo, active, row, n, speed, tau);  // the first assembly works out the pattern
+    const double pattern = since(start);
+    const double assemble = timePerRun([&] { system.assemble(topo, geo, active, row, n, speed, tau); }, 0.2, 2);
+    const Eigen::SparseMatrix<double>& K = system.matrix();
+    const Eigen::VectorXd& rhs = system.rhs();
+    Eigen::VectorXd x;
     double t[2][3] = {};
     for (int b = 0; b < 2; ++b) {
       const SpdBackend backend = b == 0 ? SpdBackend::SimplicialLDLT : SpdBackend::Cholmod;
       if (b == 1 && !SpdSolver::cholmodAvailable()) continue;
       SpdSolver solver(backend);
-      auto start = Clock::now();
+      start = Clock::now();
       solver.analyzePattern(K);
       t[b][0] = since(start);
       const bool big = n > 100000;  // one factorisation only where it takes tens of seconds
@@ -311,7 +340,7 @@ int factorization(const std::vector<long>& levels) {
     if (SpdSolver::cholmodAvailable())
       std::snprintf(cholmod, sizeof cholmod, "%.1f | %.1f | %.1f | %.1f×", 1e3 * t[1][0], 1e3 * t[1][1], 1e3 * t[1][2],
                     t[0][1] / t[1][1]);
-    std::printf("| %d | %ld | %.1f | %.1f | %.1f | %.1f | %s |\n", n, static_cast<long>(K.nonZeros()), 1e3 * assemble,
+    std::printf("| %d | %ld | %.1f | %.1f | %.1f | %.1f | %.1f | %s |\n", n, static_cast<long>(K.nonZeros()), 1e3 * pattern, 1e3 * assemble,
                 1e3 * t[0][0], 1e3 * t[0][1], 1e3 * t[0][2], cholmod);
     std::fflush(stdout);
   }

@@ -33,10 +33,9 @@ constexpr double kEnergySlack = 1e-4;
 }  // namespace
 
 struct FlowState::SparseSolver {
+  SemiImplicitSystem system;
   SpdSolver spd;
-  std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::SparseMatrix<double> matrix;
-  Eigen::VectorXd rhs, delta;
+  Eigen::VectorXd delta;
   bool analysed = false;
 };
 
@@ -61,15 +60,28 @@ void FlowState::buildConnectivity() {
   }
   scaleFree_ = opt_.flow == FlowType::Elastica && topo_.boundaryEdgeCount() == 0 && roles_.freeCount == used;
   solver_.reset();  // the sparsity pattern follows the connectivity
-  evaluated_ = false;
+  invalidate();
 }
 
 void FlowState::maintain(double area) {
   if (scaleFree_) normalizeArea(area);
-  if (opt_.flipEdges && flipToDelaunay(mesh_, roles_.free) > 0) {
+  if (opt_.flipEdges && mayFlip() && flipToDelaunay(mesh_, roles_.free) > 0) {
     topo_ = Topology(mesh_.vertexCount(), mesh_.faces);
     buildConnectivity();
   }
+}
+
+// Whether flipToDelaunay could flip anything: an edge between free vertices is non-Delaunay
+// exactly when its cotangent weight ½(cot α + cot β) is negative (α + β > π). Saves rebuilding the
+// adjacency for the flip search after almost every step, when nothing is to flip.
+bool FlowState::mayFlip() {
+  evaluate();
+  if (geo_.degenerate.zeroAreaFaces > 0) return true;  // zero cotangents say nothing there
+  for (int e = 0; e < topo_.edgeCount(); ++e) {
+    const auto& ev = topo_.edgeVertices(e);
+    if (geo_.edgeWeight[e] < 0 && roles_.free[ev[0]] && roles_.free[ev[1]] && !topo_.isBoundaryEdge(e)) return true;
+  }
+  return false;
 }
 
 // Rescales about the centroid to total area `area` (E is unchanged). Only for scale-free meshes,
@@ -85,17 +97,34 @@ void FlowState::normalizeArea(double area) {
   c /= std::max(n, 1);
   for (int v = 0; v < topo_.vertexCount(); ++v)
     if (!topo_.isIsolatedVertex(v)) mesh_.positions[v] = c + s * (mesh_.positions[v] - c);
-  evaluated_ = false;
+  invalidate();
 }
 
 void FlowState::setPositions(const std::vector<Vec3>& p) {
   mesh_.positions = p;
-  evaluated_ = false;
+  invalidate();
+}
+
+void FlowState::evaluateGeometry() {
+  if (geometryEvaluated_) return;
+  computeGeometry(topo_, mesh_.positions, opt_.area, geo_);
+  double area = 0, minArea = std::numeric_limits<double>::infinity();
+  const double floor = 1e-12 * geo_.meanEdgeLength * geo_.meanEdgeLength;
+  const int nf = topo_.faceCount();
+#pragma omp parallel for reduction(+ : area) reduction(min : minArea) schedule(static) if (nf > kParallelGrain)
+  for (int f = 0; f < nf; ++f) {
+    if (!roles_.activeFace[f]) continue;
+    area += geo_.faceArea[f];
+    if (geo_.faceArea[f] > floor) minArea = std::min(minArea, geo_.faceArea[f]);
+  }
+  activeArea_ = area;
+  activeMinArea_ = std::isfinite(minArea) ? minArea : 0.0;
+  geometryEvaluated_ = true;
 }
 
 void FlowState::evaluate() {
   if (evaluated_) return;
-  computeGeometry(topo_, mesh_.positions, opt_.area, geo_);
+  evaluateGeometry();
   computeCurvature(topo_, geo_, mesh_.positions, opt_.curvature, curv_, lp_, &roles_.active);
   if (opt_.boundary == BoundaryMode::Slide) {
     // A boundary vertex's H is one-sided; its free neighbours need one for Δ_B H. Use the mean of
@@ -112,17 +141,6 @@ void FlowState::evaluate() {
     }
   }
   energyEvaluated_ = false;
-  double area = 0, minArea = std::numeric_limits<double>::infinity();
-  const double floor = 1e-12 * geo_.meanEdgeLength * geo_.meanEdgeLength;
-  const int nf = topo_.faceCount();
-#pragma omp parallel for reduction(+ : area) reduction(min : minArea) schedule(static) if (nf > kParallelGrain)
-  for (int f = 0; f < nf; ++f) {
-    if (!roles_.activeFace[f]) continue;
-    area += geo_.faceArea[f];
-    if (geo_.faceArea[f] > floor) minArea = std::min(minArea, geo_.faceArea[f]);
-  }
-  activeArea_ = area;
-  activeMinArea_ = std::isfinite(minArea) ? minArea : 0.0;
   evaluated_ = true;
 }
 
@@ -161,7 +179,7 @@ double FlowState::explicitStep() {
   evaluate();
   const double dt = opt_.flow == FlowType::Bilaplacian ? bilaplacianStep() : normalStep();
   slideBoundary();
-  evaluated_ = false;
+  invalidate();
   return dt;
 }
 
@@ -225,7 +243,7 @@ void FlowState::slideBoundary() {
 bool FlowState::trySemiImplicitStep(double tau) {
   auto reject = [&] {
     mesh_.positions = saved_;
-    evaluated_ = false;
+    invalidate();
     return false;
   };
   evaluate();
@@ -235,16 +253,16 @@ bool FlowState::trySemiImplicitStep(double tau) {
 
   // (M_ff + τ/2 · C_fa M_aa⁻¹ C_af) δ_f = τ M_ff F_f: to leading order F(P + δN) ≈ F − ½Δ_B²δ,
   // so the stiff fourth-order part is taken at the new time and everything else is lagged.
-  assembleSemiImplicitSystem(topo_, geo_, roles_.active, freeIndex_, n, speed_, tau, solver_->triplets, solver_->matrix,
-                             solver_->rhs);
+  SemiImplicitSystem& system = solver_->system;
+  system.assemble(topo_, geo_, roles_.active, freeIndex_, n, speed_, tau);
   if (!solver_->analysed) {
-    solver_->spd.analyzePattern(solver_->matrix);  // the pattern depends on the topology only
+    solver_->spd.analyzePattern(system.matrix());  // the pattern depends on the topology only
     solver_->analysed = true;
   }
   saved_ = mesh_.positions;
-  if (!solver_->spd.factorize(solver_->matrix)) return reject();
+  if (!solver_->spd.factorize(system.matrix())) return reject();
   Eigen::VectorXd& delta = solver_->delta;
-  solver_->spd.solve(solver_->rhs, delta);
+  solver_->spd.solve(system.rhs(), delta);
 
   const double energyBefore = energy();
   faceNormalBefore_ = geo_.faceNormal;
@@ -258,7 +276,7 @@ bool FlowState::trySemiImplicitStep(double tau) {
     if (std::abs(delta[r]) > kMaxJump * ring / std::max(1, topo_.valence(v))) return reject();
     mesh_.positions[v] += delta[r] * geo_.vertexNormal[v];
   }
-  evaluated_ = false;
+  invalidate();
   const double energyAfter = energy();
   if (!std::isfinite(energyAfter)) return reject();
   // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
@@ -269,19 +287,19 @@ bool FlowState::trySemiImplicitStep(double tau) {
 
   for (int pass = 0; pass < opt_.driftPasses && opt_.tangentialDrift; ++pass) driftPass();
   slideBoundary();
-  evaluated_ = false;
+  invalidate();
   return true;
 }
 
 void FlowState::driftPass() {
-  evaluate();
+  evaluateGeometry();  // the drift needs no curvature
   const double eps = opt_.driftFactor * activeMinArea_;
   tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, driftScratch_, drift_);
   const int nv = topo_.vertexCount();
 #pragma omp parallel for schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i)
     if (roles_.free[i]) mesh_.positions[i] += eps * drift_[i];
-  evaluated_ = false;
+  invalidate();
 }
 
 }  // namespace elastica

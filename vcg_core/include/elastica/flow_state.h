@@ -37,9 +37,9 @@ class FlowState {
   double energy();
   double lambda() { evaluate(); return curv_.lambda; }
   /// Area of the faces with a moving vertex: the length² scale of the energy-rate test.
-  double activeArea() { evaluate(); return activeArea_; }
+  double activeArea() { evaluateGeometry(); return activeArea_; }
   /// Smallest non-degenerate face area in the moving region (the paper's A_k).
-  double activeMinFaceArea() { evaluate(); return activeMinArea_; }
+  double activeMinFaceArea() { evaluateGeometry(); return activeMinArea_; }
   const Geometry& geometry() { evaluate(); return geo_; }
   /// Bytes held by the arrays an explicit step reads or writes (positions, topology, roles,
   /// geometry, curvature and scratch): the memory traffic floor of one step if each were touched
@@ -72,7 +72,10 @@ class FlowState {
   void speed(std::vector<double>& F);
   void buildConnectivity();
   void normalizeArea(double area);
+  bool mayFlip();
   void driftPass();
+  void evaluateGeometry();
+  void invalidate() { evaluated_ = geometryEvaluated_ = false; }
 
   TriMesh mesh_;
   FlowOptions opt_;
@@ -80,7 +83,8 @@ class FlowState {
   Topology topo_;
   VertexRoles roles_;
   BoundarySlider* slider_;
-  bool evaluated_ = false;
+  bool evaluated_ = false;          // geometry and curvature of the current positions
+  bool geometryEvaluated_ = false;  // geometry (and active areas) only
   bool energyEvaluated_ = false;  // the energy is computed when asked for, not at every explicit step
   bool scaleFree_ = false;
 
