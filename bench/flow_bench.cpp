@@ -195,19 +195,19 @@ struct Race {
 
 std::string Race::cells() const {
   char buf[160];
-  if (semiImplicitSeconds < 0) std::snprintf(buf, sizeof buf, "%.3f | not reached | –", explicitSeconds);
+  if (explicitSeconds == 0 && semiImplicitSeconds == 0) std::snprintf(buf, sizeof buf, "at start | at start | –");
+  else if (semiImplicitSeconds < 0) std::snprintf(buf, sizeof buf, "%.3f | not reached | –", explicitSeconds);
   else if (explicitSeconds < 0) std::snprintf(buf, sizeof buf, "not reached | %.4f | –", semiImplicitSeconds);
   else std::snprintf(buf, sizeof buf, "%.3f | %.4f | %.0f×", explicitSeconds, semiImplicitSeconds, ratio());
   return buf;
 }
 
-// Prints one row; returns the target line for it. The converged energy E* is the lowest either run
-// reached; "1 % of E*" is the criterion, "99 % of the decrease" (E − E* ≤ 1 % of E₀ − E*)
-// the meaningful one when the start is already within 1 % of E*.
+// Prints one row; returns the target line for it. The converged energy E* is the semi-implicit
+// run's plateau (the explicit run's last energy is listed beside it); "1 % of E*" is the issue's
+// criterion, "99 % of the decrease" (E − E* ≤ 1 % of E₀ − E*) the meaningful one when the start is
+// already within 1 % of E*.
 std::string compareRow(const char* what, const Curve& ex, const Curve& si, const std::string& note) {
-  double target = 1e300;
-  for (const Curve* c : {&ex, &si})
-    for (double e : c->energy) target = std::min(target, e);
+  const double target = si.energy.back();
   const double e0 = ex.energy.front();
   const double byEnergy = target + 0.01 * std::abs(target), byDecrease = target + 0.01 * (e0 - target);
   const Race literal{timeTo(ex, byEnergy), timeTo(si, byEnergy)}, decrease{timeTo(ex, byDecrease), timeTo(si, byDecrease)};
@@ -245,7 +245,7 @@ double aspectRatio(const TriMesh& m) {
 }
 
 int convergence(const std::string& bunny, double explicitSeconds, const std::vector<long>& torusSegments) {
-  std::printf("| case | E₀ → E* (lowest seen) | final E explicit / semi-implicit | explicit s to 1 %% of E* | "
+  std::printf("| case | E₀ → E* (semi-implicit plateau) | final E explicit / semi-implicit | explicit s to 1 %% of E* | "
               "semi-implicit s | ratio | explicit s to 99 %% of the decrease | semi-implicit s | ratio | "
               "steps explicit / semi-implicit | notes |\n");
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n");

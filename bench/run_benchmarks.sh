@@ -15,10 +15,10 @@ build=${1:-$root/build}
 page=$root/docs/benchmarks.md
 explicit_seconds=${EXPLICIT_SECONDS:-300}
 sizes=10000,100000,1000000
-levels=4,5,6,7
+levels=3,4,5,6,7
 if [[ ${QUICK:-0} == 1 ]]; then
   sizes=10000,100000
-  levels=4,5,6
+  levels=3,4,5,6
   explicit_seconds=30
 fi
 
@@ -51,11 +51,12 @@ cpu=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
 cores=$(nproc)
 threads_per_core=$(lscpu | sed -n 's/^Thread(s) per core: *//p')
 l3=$(lscpu | sed -n 's/^L3 cache: *//p')
+l3=${l3:-$(cat /sys/devices/system/cpu/cpu0/cache/index3/size 2>/dev/null || echo unknown)}
 cholmod=$(grep -q 'ELASTICA_HAVE_CHOLMOD\|CHOLMOD_LIBRARY:FILEPATH=/' "$build/CMakeCache.txt" && echo yes || echo no)
 blas=$(readlink -f /usr/lib/x86_64-linux-gnu/libblas.so.3 2>/dev/null || echo unknown)
 compiler=$("${CXX:-c++}" --version | head -1)
 rev=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
-dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v '^?? ' | grep -v 'docs/benchmarks.md' | wc -l)
+dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v -e '^?? ' -e 'docs/benchmarks.md' | wc -l || true)
 [[ $dirty == 0 ]] || rev="$rev (with uncommitted changes)"
 
 {
@@ -94,9 +95,13 @@ EOF
 
 ## 2. Time to converge: explicit vs semi-implicit
 
-Wall time until the energy is within 1 % of the converged energy (the lowest energy either run
-reached), from the same start. Explicit: the paper's step (τ = A_min²/150, checks every 100 steps),
-limited to ${explicit_seconds} s; semi-implicit: adaptive τ to its plateau.
+Wall time of the flow until the energy is within 1 % of the converged energy E*, the
+semi-implicit run's plateau, from the same start: the issue's criterion (E ≤ 1.01 E*), and
+E − E* ≤ 1 % of E₀ − E* (99 % of the decrease), which is the meaningful one where the start is
+already within 1 % of E*. Explicit: the paper's step (τ = A_min²/150, energy checked every 100
+steps), limited to ${explicit_seconds} s; semi-implicit: adaptive τ to its plateau. The torus is the
+issue's (R/r = 3, 48×16 = 768 vertices, every vertex free); the restoration times the flow stage of
+\`elastica fill\` on the bunny's flank (both schemes from the same bi-Laplace start).
 
 EOF
   cat "$tmp/convergence.md"

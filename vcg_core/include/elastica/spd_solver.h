@@ -26,7 +26,7 @@ class SpdSolver {
  public:
   /// Below this many rows Auto uses SimplicialLDLT: CHOLMOD's set-up costs more than it saves
   /// (measured crossover in docs/benchmarks.md).
-  static constexpr int kCholmodMinRows = 4000;
+  static constexpr int kCholmodMinRows = 2000;
 
   explicit SpdSolver(SpdBackend backend = SpdBackend::Auto);
   ~SpdSolver();
