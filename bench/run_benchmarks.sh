@@ -99,7 +99,8 @@ Wall time of the flow until the energy is within 1 % of the converged energy E*,
 semi-implicit run's plateau, from the same start: the issue's criterion (E ≤ 1.01 E*), and
 E − E* ≤ 1 % of E₀ − E* (99 % of the decrease), which is the meaningful one where the start is
 already within 1 % of E*. Explicit: the paper's step (τ = A_min²/150, energy checked every 100
-steps), limited to ${explicit_seconds} s; semi-implicit: adaptive τ to its plateau. The torus is the
+steps), limited to ${explicit_seconds} s or 2,000,000 steps (fair's default step limit), whichever comes
+first; semi-implicit: adaptive τ to its plateau. The torus is the
 issue's (R/r = 3, 48×16 = 768 vertices, every vertex free); the restoration times the flow stage of
 \`elastica fill\` on the bunny's flank (both schemes from the same bi-Laplace start).
 
