@@ -40,7 +40,7 @@ TEST(Geometry, AnglesOfEachFaceSumToPi) {
     const Topology t(m.vertexCount(), m.faces);
     const Geometry g = computeGeometry(t, m.positions);
     for (int f = 0; f < t.faceCount(); ++f)
-      EXPECT_NEAR(g.cornerAngle[3 * f] + g.cornerAngle[3 * f + 1] + g.cornerAngle[3 * f + 2], M_PI, 1e-12);
+      EXPECT_NEAR(g.cornerAngle(3 * f) + g.cornerAngle(3 * f + 1) + g.cornerAngle(3 * f + 2), M_PI, 1e-12);
   }
 }
 

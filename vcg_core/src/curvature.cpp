@@ -18,32 +18,41 @@ void computeCurvature(const Topology& topo, const Geometry& geo, const std::vect
   out.Hflow.resize(nv);
   out.g.resize(nv);
 
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
+  const bool paperLambda = opt.h2k == H2KTreatment::PaperLambda;
+  std::size_t clamped = 0;
+  // H and K; with the clamp (default) also the flow's H and g, in the same pass.
+#pragma omp parallel for reduction(+ : clamped) schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
-    if (!geo.isRegular(i)) {
-      out.H[i] = out.K[i] = 0;
-      continue;
+    double h = 0, k = 0;
+    if (geo.isRegular(i)) {
+      // Δ_B P = 2H N (Meyer's normalisation): H = ½ N·Δ_B P.
+      h = 0.5 * geo.vertexNormal[i].dot(lp[i]);
+      // A boundary vertex's full angle is π, an interior vertex's 2π.
+      const double full = topo.isBoundaryVertex(i) ? M_PI : 2 * M_PI;
+      k = (full - geo.angleSum[i]) / geo.vertexArea[i];
     }
-    // Δ_B P = 2H N (Meyer's normalisation): H = ½ N·Δ_B P.
-    out.H[i] = 0.5 * geo.vertexNormal[i].dot(lp[i]);
-    // A boundary vertex's full angle is π, an interior vertex's 2π.
-    const double full = topo.isBoundaryVertex(i) ? M_PI : 2 * M_PI;
-    out.K[i] = (full - geo.angleSum[i]) / geo.vertexArea[i];
+    out.H[i] = h;
+    out.K[i] = k;
+    if (paperLambda) continue;
+    const double g = h * h - k;
+    out.Hflow[i] = h;
+    out.g[i] = std::max(g, 0.0);
+    if (g < 0) ++clamped;
   }
+  out.lambda = 1;
+  out.lambdaVertices = 0;
+  out.clampedVertices = clamped;
+  if (!paperLambda) return;
 
   // The paper's λ rule, with guards (see H2KTreatment::PaperLambda): D is the set of active
   // interior vertices with H ≠ 0, H² < K and K above the scale-relative floor. (At a boundary
   // vertex K holds the boundary's turning angle, not a Gaussian curvature.)
-  const bool paperLambda = opt.h2k == H2KTreatment::PaperLambda;
   const double ell = geo.meanEdgeLength > 0 ? geo.meanEdgeLength : 1.0;
   const double kFloor = opt.relativeKFloor / (ell * ell);
   auto inD = [&](int i) {
     const double h = out.H[i], k = out.K[i];
-    return paperLambda && (!active || (*active)[i]) && !topo.isBoundaryVertex(i) && h != 0 && k > kFloor &&
-           h * h < k;
+    return (!active || (*active)[i]) && !topo.isBoundaryVertex(i) && h != 0 && k > kFloor && h * h < k;
   };
-  out.lambda = 1;
-  out.lambdaVertices = 0;
   double lambda = std::numeric_limits<double>::infinity();
   for (int i = 0; i < nv; ++i) {
     if (!inD(i)) continue;
@@ -52,7 +61,7 @@ void computeCurvature(const Topology& topo, const Geometry& geo, const std::vect
   }
   if (out.lambdaVertices > 0) out.lambda = std::max(lambda, opt.lambdaFloor);
 
-  std::size_t clamped = 0;
+  clamped = 0;
 #pragma omp parallel for reduction(+ : clamped) schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
     const double h = inD(i) ? out.H[i] / out.lambda : out.H[i];

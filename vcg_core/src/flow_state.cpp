@@ -6,8 +6,10 @@
 #include <elastica/parallel.h>
 #include <elastica/tangential.h>
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
+#include <elastica/semi_implicit_system.h>
+#include <elastica/spd_solver.h>
+
+#include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
@@ -31,8 +33,9 @@ constexpr double kEnergySlack = 1e-4;
 }  // namespace
 
 struct FlowState::SparseSolver {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
-  std::vector<Eigen::Triplet<double>> triplets;
+  SemiImplicitSystem system;
+  SpdSolver spd;
+  Eigen::VectorXd delta;
   bool analysed = false;
 };
 
@@ -57,15 +60,28 @@ void FlowState::buildConnectivity() {
   }
   scaleFree_ = opt_.flow == FlowType::Elastica && topo_.boundaryEdgeCount() == 0 && roles_.freeCount == used;
   solver_.reset();  // the sparsity pattern follows the connectivity
-  evaluated_ = false;
+  invalidate();
 }
 
 void FlowState::maintain(double area) {
   if (scaleFree_) normalizeArea(area);
-  if (opt_.flipEdges && flipToDelaunay(mesh_, roles_.free) > 0) {
+  if (opt_.flipEdges && mayFlip() && flipToDelaunay(mesh_, roles_.free) > 0) {
     topo_ = Topology(mesh_.vertexCount(), mesh_.faces);
     buildConnectivity();
   }
+}
+
+// Whether flipToDelaunay could flip anything: an edge between free vertices is non-Delaunay
+// exactly when its cotangent weight ½(cot α + cot β) is negative (α + β > π). Saves rebuilding the
+// adjacency for the flip search after almost every step, when nothing is to flip.
+bool FlowState::mayFlip() {
+  evaluate();
+  if (geo_.degenerate.zeroAreaFaces > 0) return true;  // zero cotangents say nothing there
+  for (int e = 0; e < topo_.edgeCount(); ++e) {
+    const auto& ev = topo_.edgeVertices(e);
+    if (geo_.edgeWeight[e] < 0 && roles_.free[ev[0]] && roles_.free[ev[1]] && !topo_.isBoundaryEdge(e)) return true;
+  }
+  return false;
 }
 
 // Rescales about the centroid to total area `area` (E is unchanged). Only for scale-free meshes,
@@ -81,17 +97,34 @@ void FlowState::normalizeArea(double area) {
   c /= std::max(n, 1);
   for (int v = 0; v < topo_.vertexCount(); ++v)
     if (!topo_.isIsolatedVertex(v)) mesh_.positions[v] = c + s * (mesh_.positions[v] - c);
-  evaluated_ = false;
+  invalidate();
 }
 
 void FlowState::setPositions(const std::vector<Vec3>& p) {
   mesh_.positions = p;
-  evaluated_ = false;
+  invalidate();
+}
+
+void FlowState::evaluateGeometry() {
+  if (geometryEvaluated_) return;
+  computeGeometry(topo_, mesh_.positions, opt_.area, geo_);
+  double area = 0, minArea = std::numeric_limits<double>::infinity();
+  const double floor = 1e-12 * geo_.meanEdgeLength * geo_.meanEdgeLength;
+  const int nf = topo_.faceCount();
+#pragma omp parallel for reduction(+ : area) reduction(min : minArea) schedule(static) if (nf > kParallelGrain)
+  for (int f = 0; f < nf; ++f) {
+    if (!roles_.activeFace[f]) continue;
+    area += geo_.faceArea[f];
+    if (geo_.faceArea[f] > floor) minArea = std::min(minArea, geo_.faceArea[f]);
+  }
+  activeArea_ = area;
+  activeMinArea_ = std::isfinite(minArea) ? minArea : 0.0;
+  geometryEvaluated_ = true;
 }
 
 void FlowState::evaluate() {
   if (evaluated_) return;
-  computeGeometry(topo_, mesh_.positions, opt_.area, geo_);
+  evaluateGeometry();
   computeCurvature(topo_, geo_, mesh_.positions, opt_.curvature, curv_, lp_, &roles_.active);
   if (opt_.boundary == BoundaryMode::Slide) {
     // A boundary vertex's H is one-sided; its free neighbours need one for Δ_B H. Use the mean of
@@ -107,17 +140,28 @@ void FlowState::evaluate() {
       curv_.Hflow[v] = n ? sum / n : 0.0;
     }
   }
-  energy_ = totalCurvatureEnergy(topo_, geo_, curv_, &roles_.active);
-  activeArea_ = 0;
-  activeMinArea_ = std::numeric_limits<double>::infinity();
-  const double floor = 1e-12 * geo_.meanEdgeLength * geo_.meanEdgeLength;
-  for (int f = 0; f < topo_.faceCount(); ++f) {
-    if (!roles_.activeFace[f]) continue;
-    activeArea_ += geo_.faceArea[f];
-    if (geo_.faceArea[f] > floor) activeMinArea_ = std::min(activeMinArea_, geo_.faceArea[f]);
-  }
-  if (!std::isfinite(activeMinArea_)) activeMinArea_ = 0;
+  energyEvaluated_ = false;
   evaluated_ = true;
+}
+
+double FlowState::energy() {
+  evaluate();
+  if (!energyEvaluated_) {
+    energy_ = totalCurvatureEnergy(topo_, geo_, curv_, &roles_.active);
+    energyEvaluated_ = true;
+  }
+  return energy_;
+}
+
+std::size_t FlowState::stepWorkingSetBytes() const {
+  auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
+  return topo_.byteSize() + bytes(mesh_.positions) + bytes(roles_.free) + bytes(roles_.active) +
+         bytes(roles_.activeFace) + bytes(geo_.faceArea) + bytes(geo_.faceNormal) + bytes(geo_.cornerDot) +
+         bytes(geo_.cornerCot) + bytes(geo_.cornerArea) + bytes(geo_.edgeLength) + bytes(geo_.edgeWeight) +
+         bytes(geo_.vertexArea) + bytes(geo_.ringArea) +
+         bytes(geo_.vertexNormal) + bytes(geo_.angleSum) + bytes(curv_.H) + bytes(curv_.K) + bytes(curv_.Hflow) +
+         bytes(curv_.g) + bytes(lp_) + bytes(lh_) + bytes(driftScratch_.weight) + bytes(driftScratch_.u) +
+         bytes(drift_);
 }
 
 double FlowState::checkedMinArea() const {
@@ -135,7 +179,7 @@ double FlowState::explicitStep() {
   evaluate();
   const double dt = opt_.flow == FlowType::Bilaplacian ? bilaplacianStep() : normalStep();
   slideBoundary();
-  evaluated_ = false;
+  invalidate();
   return dt;
 }
 
@@ -156,16 +200,20 @@ double FlowState::normalStep() {
   const double aMin = checkedMinArea();
   const double tau = opt_.stepFactor * aMin * aMin;  // paper: τ = A_min²/150
   const double eps = opt_.driftFactor * aMin;        // paper: ε = 12 A_min
-  speed(speed_);
-  if (opt_.tangentialDrift) tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, u_, drift_);
+  cotanLaplacian(topo_, geo_, curv_.Hflow, lh_);
+  const bool drift = opt_.tangentialDrift;
+  if (drift) tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, driftScratch_, drift_);
+  const bool elastica = opt_.flow == FlowType::Elastica;
   const int nv = topo_.vertexCount();
   bool finite = true;
 #pragma omp parallel for reduction(&& : finite) schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i) {
     if (!roles_.free[i]) continue;
+    // The speed of speed(), inline: F = −Δ_B H − 2H(H² − K) (paper sign convention).
+    const double F = -lh_[i] - (elastica ? 2 * curv_.Hflow[i] * curv_.g[i] : 0.0);
     Vec3& p = mesh_.positions[i];
-    p += tau * speed_[i] * geo_.vertexNormal[i];
-    if (opt_.tangentialDrift) p += eps * drift_[i];
+    p += tau * F * geo_.vertexNormal[i];
+    if (drift) p += eps * drift_[i];
     finite = finite && p.allFinite();
   }
   if (!finite) throw NumericalError("a vertex position became non-finite");
@@ -195,7 +243,7 @@ void FlowState::slideBoundary() {
 bool FlowState::trySemiImplicitStep(double tau) {
   auto reject = [&] {
     mesh_.positions = saved_;
-    evaluated_ = false;
+    invalidate();
     return false;
   };
   evaluate();
@@ -205,43 +253,18 @@ bool FlowState::trySemiImplicitStep(double tau) {
 
   // (M_ff + τ/2 · C_fa M_aa⁻¹ C_af) δ_f = τ M_ff F_f: to leading order F(P + δN) ≈ F − ½Δ_B²δ,
   // so the stiff fourth-order part is taken at the new time and everything else is lagged.
-  auto& trip = solver_->triplets;
-  trip.clear();
-  std::vector<std::pair<int, double>> column;  // (row, C_ij) of the free vertices around active i
-  for (int i = 0; i < nv; ++i) {
-    if (!roles_.active[i] || !geo_.isRegular(i)) continue;
-    column.clear();
-    double diagonal = 0;
-    for (int k = topo_.ringBegin(i); k < topo_.ringEnd(i); ++k) {
-      const double w = geo_.edgeWeight[topo_.ringEdge(k)];
-      diagonal -= w;
-      const int r = freeIndex_[topo_.ringVertex(k)];
-      if (r >= 0) column.emplace_back(r, w);
-    }
-    if (freeIndex_[i] >= 0) column.emplace_back(freeIndex_[i], diagonal);
-    const double s = 0.5 * tau / geo_.vertexArea[i];
-    for (const auto& [r1, c1] : column)
-      for (const auto& [r2, c2] : column) trip.emplace_back(r1, r2, s * c1 * c2);
-  }
-  Eigen::VectorXd rhs(n);
-  for (int v = 0; v < nv; ++v) {
-    const int r = freeIndex_[v];
-    if (r < 0) continue;
-    trip.emplace_back(r, r, geo_.vertexArea[v]);
-    rhs[r] = tau * geo_.vertexArea[v] * speed_[v];
-  }
-  Eigen::SparseMatrix<double> K(n, n);
-  K.setFromTriplets(trip.begin(), trip.end());
+  SemiImplicitSystem& system = solver_->system;
+  system.assemble(topo_, geo_, roles_.active, freeIndex_, n, speed_, tau);
   if (!solver_->analysed) {
-    solver_->ldlt.analyzePattern(K);  // the pattern depends on the topology only
+    solver_->spd.analyzePattern(system.matrix());  // the pattern depends on the topology only
     solver_->analysed = true;
   }
-  solver_->ldlt.factorize(K);
   saved_ = mesh_.positions;
-  if (solver_->ldlt.info() != Eigen::Success) return reject();
-  const Eigen::VectorXd delta = solver_->ldlt.solve(rhs);
+  if (!solver_->spd.factorize(system.matrix())) return reject();
+  Eigen::VectorXd& delta = solver_->delta;
+  solver_->spd.solve(system.rhs(), delta);
 
-  const double energyBefore = energy_;
+  const double energyBefore = energy();
   const double energyLimit = energyBefore * (1 + kEnergySlack) + 1e-12;
   faceNormalBefore_ = geo_.faceNormal;
   for (int v = 0; v < nv; ++v) {
@@ -254,7 +277,7 @@ bool FlowState::trySemiImplicitStep(double tau) {
     if (std::abs(delta[r]) > kMaxJump * ring / std::max(1, topo_.valence(v))) return reject();
     mesh_.positions[v] += delta[r] * geo_.vertexNormal[v];
   }
-  evaluated_ = false;
+  invalidate();
   if (!acceptable(energyLimit)) return reject();
 
   // The drift is held to the same rules: a pass that folds a face or lifts the energy above what
@@ -262,34 +285,34 @@ bool FlowState::trySemiImplicitStep(double tau) {
   for (int pass = 0; pass < opt_.driftPasses && opt_.tangentialDrift; ++pass)
     if (!driftPass(energyLimit)) break;
   slideBoundary();
-  evaluated_ = false;
+  invalidate();
   return true;
 }
 
 bool FlowState::acceptable(double energyLimit) {
-  evaluate();
-  if (!std::isfinite(energy_)) return false;
-  // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
-  if (opt_.flow == FlowType::Elastica && energy_ > energyLimit) return false;
+  evaluateGeometry();
   for (int f = 0; f < topo_.faceCount(); ++f)
     if (roles_.activeFace[f] && geo_.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return false;
-  return true;
+  const double e = energy();
+  if (!std::isfinite(e)) return false;
+  // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
+  return opt_.flow != FlowType::Elastica || e <= energyLimit;
 }
 
 bool FlowState::driftPass(double energyLimit) {
-  evaluate();
+  evaluateGeometry();  // the drift itself needs no curvature
   const double eps = opt_.driftFactor * activeMinArea_;
-  tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, u_, drift_);
+  tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, driftScratch_, drift_);
   driftSaved_ = mesh_.positions;
   faceNormalBefore_ = geo_.faceNormal;
   const int nv = topo_.vertexCount();
 #pragma omp parallel for schedule(static) if (nv > kParallelGrain)
   for (int i = 0; i < nv; ++i)
     if (roles_.free[i]) mesh_.positions[i] += eps * drift_[i];
-  evaluated_ = false;
+  invalidate();
   if (acceptable(energyLimit)) return true;
   mesh_.positions = driftSaved_;
-  evaluated_ = false;
+  invalidate();
   return false;
 }
 

@@ -30,6 +30,33 @@ double meanEdgeLength(const Topology& topo, const std::vector<Vec3>& p) {
   return sum / ne;
 }
 
+namespace {
+
+// Σ of the angles arg(d_c + i·s_c) ∈ [0, π] of the corners [begin, end) of one vertex with one
+// atan2: the product of the complex numbers d + i·s turns by the sum. The product is kept in the
+// closed upper half-plane (negated, counting a half turn, whenever it leaves it), which is exact
+// because each factor turns by at most π.
+double angleSumOf(const Topology& topo, const Geometry& g, int begin, int end) {
+  double re = 1, im = 0;
+  int halfTurns = 0;
+  for (int k = begin; k < end; ++k) {
+    const int c = topo.corner(k);
+    double d = g.cornerDot[c], s = 2 * g.faceArea[c / 3];
+    const double scale = std::max(std::abs(d), s);
+    if (!(scale > 0)) continue;  // coincident points: angle 0, as atan2(0, 0)
+    d /= scale, s /= scale;      // |d + i·s| in [1, √2]: the product neither under- nor overflows
+    const double r = re * d - im * s, i = re * s + im * d;
+    if (i < 0) re = -r, im = -i, ++halfTurns;
+    else re = r, im = i;
+    if (std::abs(re) + im > 1e100) re *= 1e-100, im *= 1e-100;  // valence > 600 only
+  }
+  return halfTurns * M_PI + std::atan2(std::abs(im), re);
+}
+
+}  // namespace
+
+double Geometry::cornerAngle(std::size_t c) const { return std::atan2(2 * faceArea[c / 3], cornerDot[c]); }
+
 void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g) {
   const int nv = topo.vertexCount(), nf = topo.faceCount(), ne = topo.edgeCount();
   if (static_cast<int>(p.size()) != nv) {
@@ -37,21 +64,31 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
                             std::to_string(nv) + " vertices");
   }
   g.areaType = areaType;
-  g.meanEdgeLength = meanEdgeLength(topo, p);
+  g.faceArea.resize(nf);
+  g.faceNormal.resize(nf);
+  g.cornerDot.resize(3 * static_cast<size_t>(nf));
+  g.cornerCot.resize(3 * static_cast<size_t>(nf));
+  g.cornerArea.resize(3 * static_cast<size_t>(nf));
+  g.edgeLength.resize(ne);
+  g.edgeWeight.resize(ne);
+  g.vertexArea.resize(nv);
+  g.ringArea.resize(nv);
+  g.vertexNormal.resize(nv);
+  g.angleSum.resize(nv);
+
+  // Edge lengths first: their mean sets the scale of every floor below.
+  double lengthSum = 0;
+#pragma omp parallel for reduction(+ : lengthSum) schedule(static) if (ne > kParallelGrain)
+  for (int e = 0; e < ne; ++e) {
+    const auto& ev = topo.edgeVertices(e);
+    g.edgeLength[e] = (p[ev[1]] - p[ev[0]]).norm();
+    lengthSum += g.edgeLength[e];
+  }
+  g.meanEdgeLength = ne > 0 ? lengthSum / ne : 0.0;
   if (!std::isfinite(g.meanEdgeLength)) throw NumericalError("computeGeometry: non-finite vertex position");
   const double ell = g.meanEdgeLength > 0 ? g.meanEdgeLength : 1.0;
   const double areaFloor = kRelativeAreaFloor * ell * ell;
   const double lengthFloor = kRelativeLengthFloor * ell;
-
-  g.faceArea.resize(nf);
-  g.faceNormal.resize(nf);
-  g.cornerAngle.resize(3 * static_cast<size_t>(nf));
-  g.cornerCot.resize(3 * static_cast<size_t>(nf));
-  g.cornerArea.resize(3 * static_cast<size_t>(nf));
-  g.edgeWeight.resize(ne);
-  g.vertexArea.resize(nv);
-  g.vertexNormal.resize(nv);
-  g.angleSum.resize(nv);
 
   const auto& faces = topo.faces();
   std::size_t zeroAreaFaces = 0;
@@ -59,7 +96,8 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
 #pragma omp parallel for reduction(+ : zeroAreaFaces) reduction(min : minArea) schedule(static) if (nf > kParallelGrain)
   for (int f = 0; f < nf; ++f) {
     const Face& t = faces[f];
-    const Vec3 n = (p[t[1]] - p[t[0]]).cross(p[t[2]] - p[t[0]]);
+    const Vec3 e[3] = {p[t[2]] - p[t[1]], p[t[0]] - p[t[2]], p[t[1]] - p[t[0]]};  // e[k] opposite corner k
+    const Vec3 n = e[2].cross(-e[1]);
     const double twiceArea = n.norm();
     const double area = 0.5 * twiceArea;
     const bool degenerate = area <= areaFloor;
@@ -67,23 +105,20 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
     g.faceNormal[f] = degenerate ? Vec3::Zero() : Vec3(n / twiceArea);
     if (degenerate) ++zeroAreaFaces; else minArea = std::min(minArea, area);
 
-    double sqLen[3];  // squared length of the edge opposite corner k
+    const double sqLen[3] = {e[0].squaredNorm(), e[1].squaredNorm(), e[2].squaredNorm()};
+    const double inverse = degenerate ? 0.0 : 1.0 / std::max(twiceArea, areaFloor);
+    const size_t c0 = 3 * static_cast<size_t>(f);
     bool obtuse[3];
     for (int k = 0; k < 3; ++k) {
-      const Vec3 u = p[t[(k + 1) % 3]] - p[t[k]];
-      const Vec3 w = p[t[(k + 2) % 3]] - p[t[k]];
-      const double d = u.dot(w);
-      const size_t c = 3 * static_cast<size_t>(f) + k;
-      // |u × w| is 2·area for every corner of the face; atan2 stays accurate near 0 and π.
-      g.cornerAngle[c] = std::atan2(twiceArea, d);
+      // u = P[k+1] − P[k] = e[k+2], w = P[k+2] − P[k] = −e[k+1]. |u × w| is 2·area at every corner.
+      const double d = -e[(k + 2) % 3].dot(e[(k + 1) % 3]);
+      g.cornerDot[c0 + k] = d;
       // A degenerate face has no meaningful cotangents: it gets zero weight rather than ±clamp,
       // which would make the Laplacian (and an explicit step) blow up around it.
-      g.cornerCot[c] = degenerate ? 0.0 : std::clamp(d / std::max(twiceArea, areaFloor), -kCotClamp, kCotClamp);
-      sqLen[(k + 1) % 3] = w.squaredNorm();  // edge t[k]–t[k+2] is opposite corner k+1
+      g.cornerCot[c0 + k] = std::clamp(d * inverse, -kCotClamp, kCotClamp);
       obtuse[k] = d < 0;
     }
     for (int k = 0; k < 3; ++k) {
-      const size_t c = 3 * static_cast<size_t>(f) + k;
       double a;
       if (degenerate) {
         a = 0;
@@ -95,10 +130,10 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
       } else {
         // Voronoi area of corner k: (|e_{k+1}|² cot θ_{k+1} + |e_{k+2}|² cot θ_{k+2}) / 8, where
         // e_j is the edge opposite corner j (both edges touch corner k).
-        const size_t c1 = 3 * static_cast<size_t>(f) + (k + 1) % 3, c2 = 3 * static_cast<size_t>(f) + (k + 2) % 3;
-        a = (sqLen[(k + 1) % 3] * g.cornerCot[c1] + sqLen[(k + 2) % 3] * g.cornerCot[c2]) / 8;
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        a = (sqLen[k1] * g.cornerCot[c0 + k1] + sqLen[k2] * g.cornerCot[c0 + k2]) / 8;
       }
-      g.cornerArea[c] = a;
+      g.cornerArea[c0 + k] = a;
     }
   }
   g.minFaceArea = std::isfinite(minArea) ? minArea : 0.0;
@@ -106,8 +141,7 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   std::size_t zeroLengthEdges = 0;
 #pragma omp parallel for reduction(+ : zeroLengthEdges) schedule(static) if (ne > kParallelGrain)
   for (int e = 0; e < ne; ++e) {
-    const auto& ev = topo.edgeVertices(e);
-    if ((p[ev[1]] - p[ev[0]]).norm() <= lengthFloor) ++zeroLengthEdges;
+    if (g.edgeLength[e] <= lengthFloor) ++zeroLengthEdges;
     const auto& oc = topo.edgeOppositeCorners(e);
     g.edgeWeight[e] = 0.5 * (g.cornerCot[oc[0]] + (oc[1] >= 0 ? g.cornerCot[oc[1]] : 0.0));
   }
@@ -115,16 +149,17 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   std::size_t zeroAreaVertices = 0, isolated = 0;
 #pragma omp parallel for reduction(+ : zeroAreaVertices, isolated) schedule(static) if (nv > kParallelGrain)
   for (int v = 0; v < nv; ++v) {
-    double area = 0, angles = 0;
+    double area = 0, ring = 0;
     Vec3 normal = Vec3::Zero();
     for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) {
       const int c = topo.corner(k);
       area += g.cornerArea[c];
-      angles += g.cornerAngle[c];
+      ring += g.faceArea[c / 3];
       normal += g.faceArea[c / 3] * g.faceNormal[c / 3];  // the paper's area-weighted normal
     }
     const double len = normal.norm();
-    g.angleSum[v] = angles;
+    g.angleSum[v] = angleSumOf(topo, g, topo.cornerBegin(v), topo.cornerEnd(v));
+    g.ringArea[v] = ring;
     if (topo.isIsolatedVertex(v)) {
       ++isolated;
       area = 0;

@@ -4,47 +4,45 @@
 namespace elastica {
 namespace {
 
-// Applies the area-weighted umbrella with weights taken from positions `p` to the field `f`:
-// out_i = Σ_j w_ij (f_j − f_i) at moving vertices, 0 elsewhere.
-void areaUmbrella(const Topology& topo, const Geometry& g, const std::vector<Vec3>& p,
-                  const std::vector<std::uint8_t>& moving, const std::vector<Vec3>& f, std::vector<Vec3>& out) {
-  const int nv = topo.vertexCount();
-  const double lengthFloor = 1e-12 * (g.meanEdgeLength > 0 ? g.meanEdgeLength : 1.0);
-  out.resize(nv);
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
-    Vec3 sum = Vec3::Zero();
-    if (moving[i]) {
-      double ringArea = 0;
-      for (int k = topo.cornerBegin(i); k < topo.cornerEnd(i); ++k) ringArea += g.faceArea[topo.corner(k) / 3];
-      const int n = topo.valence(i);
-      if (ringArea > 0 && n > 0) {
-        for (int k = topo.ringBegin(i); k < topo.ringEnd(i); ++k) {
-          const int j = topo.ringVertex(k);
-          const double len = (p[j] - p[i]).norm();
-          if (len <= lengthFloor) continue;
-          const auto& oc = topo.edgeOppositeCorners(topo.ringEdge(k));
-          const double a = g.faceArea[oc[0] / 3] + (oc[1] >= 0 ? g.faceArea[oc[1] / 3] : 0.0);
-          sum += (a / len) * (f[j] - f[i]);
-        }
-        sum /= 2 * ringArea * n;
-      }
-    }
-    out[i] = sum;
+// out_i = 1/(2 A_i n_i) Σ_j w_ij (f_j − f_i) at moving vertices, 0 elsewhere (w: per-edge weights).
+void areaUmbrella(const Topology& topo, const Geometry& g, const std::vector<double>& w,
+                  const std::vector<std::uint8_t>& moving, const std::vector<Vec3>& f, int i, Vec3& out) {
+  Vec3 sum = Vec3::Zero();
+  const int n = topo.valence(i);
+  if (moving[i] && g.ringArea[i] > 0 && n > 0) {
+    for (int k = topo.ringBegin(i); k < topo.ringEnd(i); ++k) sum += w[topo.ringEdge(k)] * (f[topo.ringVertex(k)] - f[i]);
+    sum /= 2 * g.ringArea[i] * n;
   }
+  out = sum;
 }
 
 }  // namespace
 
 void tangentialDrift(const Topology& topo, const Geometry& g, const std::vector<Vec3>& p,
-                     const std::vector<std::uint8_t>& moving, std::vector<Vec3>& u, std::vector<Vec3>& t) {
-  areaUmbrella(topo, g, p, moving, p, u);  // U(P); zero where not moving
-  areaUmbrella(topo, g, p, moving, u, t);  // U(U(P)) = U²
-  const int nv = topo.vertexCount();
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
-    const Vec3& n = g.vertexNormal[i];
-    t[i] = -(t[i] - t[i].dot(n) * n);
+                     const std::vector<std::uint8_t>& moving, DriftScratch& scratch, std::vector<Vec3>& t) {
+  const int nv = topo.vertexCount(), ne = topo.edgeCount();
+  const double lengthFloor = 1e-12 * (g.meanEdgeLength > 0 ? g.meanEdgeLength : 1.0);
+  std::vector<double>& w = scratch.weight;
+  std::vector<Vec3>& u = scratch.u;
+  w.resize(ne);
+  u.resize(nv);
+  t.resize(nv);
+#pragma omp parallel if (nv > kParallelGrain)
+  {
+#pragma omp for schedule(static)
+    for (int e = 0; e < ne; ++e) {
+      const auto& oc = topo.edgeOppositeCorners(e);
+      const double a = g.faceArea[oc[0] / 3] + (oc[1] >= 0 ? g.faceArea[oc[1] / 3] : 0.0);
+      w[e] = g.edgeLength[e] > lengthFloor ? a / g.edgeLength[e] : 0.0;
+    }
+#pragma omp for schedule(static)
+    for (int i = 0; i < nv; ++i) areaUmbrella(topo, g, w, moving, p, i, u[i]);  // U(P); zero where not moving
+#pragma omp for schedule(static)
+    for (int i = 0; i < nv; ++i) {
+      areaUmbrella(topo, g, w, moving, u, i, t[i]);  // U(U(P)) = U²
+      const Vec3& n = g.vertexNormal[i];
+      t[i] = -(t[i] - t[i].dot(n) * n);
+    }
   }
 }
 

@@ -132,4 +132,10 @@ Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertex
   }
 }
 
+std::size_t Topology::byteSize() const {
+  auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
+  return bytes(faces_) + bytes(edgeVertices_) + bytes(edgeCorners_) + bytes(ringOffset_) + bytes(ringVertex_) +
+         bytes(ringEdge_) + bytes(cornerOffset_) + bytes(vertexCorner_) + bytes(boundaryVertex_);
+}
+
 }  // namespace elastica

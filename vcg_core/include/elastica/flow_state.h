@@ -8,8 +8,10 @@
 #include <elastica/curvature.h>
 #include <elastica/flow.h>
 #include <elastica/geometry.h>
+#include <elastica/tangential.h>
 #include <elastica/topology.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -32,13 +34,17 @@ class FlowState {
   /// Geometry, curvature and energy of the current positions; cached until they change.
   void evaluate();
   /// Total curvature energy of the active region (free vertices and ring 1).
-  double energy() { evaluate(); return energy_; }
+  double energy();
   double lambda() { evaluate(); return curv_.lambda; }
   /// Area of the faces with a moving vertex: the length² scale of the energy-rate test.
-  double activeArea() { evaluate(); return activeArea_; }
+  double activeArea() { evaluateGeometry(); return activeArea_; }
   /// Smallest non-degenerate face area in the moving region (the paper's A_k).
-  double activeMinFaceArea() { evaluate(); return activeMinArea_; }
+  double activeMinFaceArea() { evaluateGeometry(); return activeMinArea_; }
   const Geometry& geometry() { evaluate(); return geo_; }
+  /// Bytes held by the arrays an explicit step reads or writes (positions, topology, roles,
+  /// geometry, curvature and scratch): the memory traffic floor of one step if each were touched
+  /// once. For the benchmarks' bandwidth reference.
+  std::size_t stepWorkingSetBytes() const;
   const Curvature& curvature() { evaluate(); return curv_; }
 
   /// One explicit step: paper eq. 2.3 for the elastica and Laplacian-of-H flows (with the
@@ -66,11 +72,14 @@ class FlowState {
   void speed(std::vector<double>& F);
   void buildConnectivity();
   void normalizeArea(double area);
-  /// Evaluates the moved positions: finite energy, at most `energyLimit` (elastica), no active
-  /// face turned over since faceNormalBefore_.
+  bool mayFlip();
+  /// Evaluates the moved positions: no active face turned over since faceNormalBefore_, finite
+  /// energy, at most `energyLimit` (elastica).
   bool acceptable(double energyLimit);
   /// One tangential drift pass; undone (returns false) if the result is not acceptable().
   bool driftPass(double energyLimit);
+  void evaluateGeometry();
+  void invalidate() { evaluated_ = geometryEvaluated_ = false; }
 
   TriMesh mesh_;
   FlowOptions opt_;
@@ -78,13 +87,16 @@ class FlowState {
   Topology topo_;
   VertexRoles roles_;
   BoundarySlider* slider_;
-  bool evaluated_ = false;
+  bool evaluated_ = false;          // geometry and curvature of the current positions
+  bool geometryEvaluated_ = false;  // geometry (and active areas) only
+  bool energyEvaluated_ = false;  // the energy is computed when asked for, not at every explicit step
   bool scaleFree_ = false;
 
   Geometry geo_;
   Curvature curv_;
   double energy_ = 0, activeArea_ = 0, activeMinArea_ = 0;
   std::vector<Vec3> lp_, u_, drift_;
+  DriftScratch driftScratch_;
   std::vector<double> lh_, speed_, delta_;
   std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_;
   std::vector<int> freeIndex_;  // vertex → row of the semi-implicit system, or -1

@@ -38,17 +38,21 @@ struct Geometry {
 
   std::vector<double> faceArea;      ///< per face
   std::vector<Vec3> faceNormal;      ///< per face, unit (zero for degenerate faces)
-  std::vector<double> cornerAngle;   ///< per corner 3f+k, radians
+  std::vector<double> cornerDot;     ///< per corner 3f+k: u·w of its two edge vectors (|u||w| cos θ)
   std::vector<double> cornerCot;     ///< per corner, clamped to ±1e3; 0 in degenerate faces
   std::vector<double> cornerArea;    ///< per corner: the part of its face's area given to its vertex
+  std::vector<double> edgeLength;    ///< per edge
   std::vector<double> edgeWeight;    ///< per edge: C_ij = ½(cot α_ij + cot β_ij)
   std::vector<double> vertexArea;    ///< per vertex: A_i (mixed or barycentric)
+  std::vector<double> ringArea;      ///< per vertex: Σ of the incident faces' areas
   std::vector<Vec3> vertexNormal;    ///< per vertex: area-weighted, unit (zero if undefined)
   std::vector<double> angleSum;      ///< per vertex: Σ of incident corner angles
   DegeneracyCounts degenerate;
 
   /// True when vertex i has a usable area and normal (not isolated, not degenerate).
   bool isRegular(int i) const { return vertexArea[i] > 0; }
+  /// The angle at corner c, radians (computed on demand: a step needs only the sums).
+  double cornerAngle(std::size_t c) const;
 };
 
 /// Fills `g` (reusing its storage: no allocation once sized) from positions `p`.

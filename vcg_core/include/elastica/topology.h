@@ -4,6 +4,7 @@
 
 #include <elastica/types.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -52,6 +53,9 @@ class Topology {
   int inconsistentEdgeCount() const { return inconsistentEdges_; }
   /// Vertices whose incident faces form more than one fan (non-manifold "bow-tie" vertices).
   int nonManifoldVertexCount() const { return nonManifoldVertices_; }
+  /// Bytes of the adjacency arrays (faces, edges, rings, corners, boundary flags).
+  std::size_t byteSize() const;
+
   /// V − E + F.
   int eulerCharacteristic() const { return nv_ - edgeCount() + faceCount(); }
 

@@ -1,0 +1,45 @@
+// The linear system of one semi-implicit step (DESIGN.md §4): to leading order
+// F(P + δN) ≈ F − ½ Δ_B² δ, so the normal displacement δ of the free vertices f solves
+//   (M_ff + τ/2 · C_fa M_aa⁻¹ C_af) δ_f = τ M_ff F_f,
+// with a = free ∪ ring 1, C the cotangent matrix and M the vertex areas. SPD; about 19 nonzeros per
+// row (the two-ring stencil).
+#pragma once
+
+#include <elastica/geometry.h>
+#include <elastica/topology.h>
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <cstdint>
+#include <vector>
+
+namespace elastica {
+
+class SemiImplicitSystem {
+ public:
+  /// Assembles the matrix and the right-hand side for step `tau`. `freeIndex[v]` is the row of
+  /// free vertex v or −1 (`n` rows); `active` marks free ∪ ring 1; `speed` is F per vertex. The
+  /// sparsity pattern, and where each product C_ia C_ib / A_i lands in it, are worked out on the
+  /// first call and reused (no allocation, no sorting) until reset().
+  void assemble(const Topology& topo, const Geometry& geo, const std::vector<std::uint8_t>& active,
+                const std::vector<int>& freeIndex, int n, const std::vector<double>& speed, double tau);
+  /// Forgets the pattern: call when the connectivity or the free vertices change.
+  void reset() { patterned_ = false; }
+
+  const Eigen::SparseMatrix<double>& matrix() const { return K_; }
+  const Eigen::VectorXd& rhs() const { return rhs_; }
+
+ private:
+  void buildPattern(const Topology& topo, const std::vector<std::uint8_t>& active, const std::vector<int>& freeIndex,
+                    int n);
+
+  Eigen::SparseMatrix<double> K_;
+  Eigen::VectorXd rhs_;
+  std::vector<int> slot_;          // per product, in assembly order: its index in K_'s values
+  std::vector<int> diagonalSlot_;  // per row
+  std::vector<std::pair<int, double>> column_;  // (row, C_ij) of the free vertices around one vertex
+  bool patterned_ = false;
+};
+
+}  // namespace elastica

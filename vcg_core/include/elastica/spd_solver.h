@@ -1,0 +1,56 @@
+// Sparse symmetric positive definite solves: CHOLMOD's supernodal Cholesky (SuiteSparse) where the
+// build has it and the system is large, Eigen's SimplicialLDLT otherwise. The fill-reducing
+// ordering and the symbolic factorisation depend on the sparsity pattern only: analyse once per
+// pattern, then factorise numerically for every new set of values.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <memory>
+
+namespace elastica {
+
+/// Which factorisation an SpdSolver uses.
+enum class SpdBackend {
+  /// CHOLMOD supernodal above `kCholmodMinRows` rows when built with it, else SimplicialLDLT.
+  Auto,
+  /// Eigen's SimplicialLDLT (AMD ordering): no dependency, fastest on small systems.
+  SimplicialLDLT,
+  /// CHOLMOD's supernodal LLᵀ (BLAS on dense supernodes); falls back to SimplicialLDLT when the
+  /// build has no CHOLMOD (see SpdSolver::cholmodAvailable()).
+  Cholmod,
+};
+
+class SpdSolver {
+ public:
+  /// Below this many rows Auto uses SimplicialLDLT: CHOLMOD's set-up costs more than it saves
+  /// (measured crossover in docs/benchmarks.md).
+  static constexpr int kCholmodMinRows = 2000;
+
+  explicit SpdSolver(SpdBackend backend = SpdBackend::Auto);
+  ~SpdSolver();
+  SpdSolver(const SpdSolver&) = delete;
+  SpdSolver& operator=(const SpdSolver&) = delete;
+
+  /// True if this build links CHOLMOD.
+  static bool cholmodAvailable();
+
+  /// Orders and analyses the pattern of `A` (lower triangle used). Implied by the first
+  /// factorize(); call again only when the pattern changes.
+  void analyzePattern(const Eigen::SparseMatrix<double>& A);
+  /// Numeric factorisation of `A`, whose pattern must be the analysed one. False if `A` is not
+  /// numerically positive definite.
+  bool factorize(const Eigen::SparseMatrix<double>& A);
+  /// Solves A x = b with the last successful factorisation.
+  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const;
+
+  /// The backend in use after analyzePattern ("CHOLMOD supernodal" or "SimplicialLDLT").
+  const char* backendName() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace elastica

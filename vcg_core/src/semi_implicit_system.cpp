@@ -1,0 +1,80 @@
+#include <elastica/semi_implicit_system.h>
+
+#include <algorithm>
+#include <utility>
+
+namespace elastica {
+namespace {
+
+// The free vertices around active vertex i (its free neighbours, then i itself if free), in the
+// order both the pattern and the values are assembled. `weight` gives C_ij per ring entry.
+template <class Weight>
+void freeColumn(const Topology& topo, const std::vector<int>& freeIndex, int i, Weight weight,
+                std::vector<std::pair<int, double>>& column) {
+  column.clear();
+  double diagonal = 0;
+  for (int k = topo.ringBegin(i); k < topo.ringEnd(i); ++k) {
+    const double w = weight(k);
+    diagonal -= w;
+    const int r = freeIndex[topo.ringVertex(k)];
+    if (r >= 0) column.emplace_back(r, w);
+  }
+  if (freeIndex[i] >= 0) column.emplace_back(freeIndex[i], diagonal);
+}
+
+}  // namespace
+
+void SemiImplicitSystem::buildPattern(const Topology& topo, const std::vector<std::uint8_t>& active,
+                                      const std::vector<int>& freeIndex, int n) {
+  std::vector<Eigen::Triplet<double>> trip;
+  for (int i = 0; i < topo.vertexCount(); ++i) {
+    if (!active[i]) continue;
+    freeColumn(topo, freeIndex, i, [](int) { return 0.0; }, column_);
+    for (const auto& a : column_)
+      for (const auto& b : column_) trip.emplace_back(a.first, b.first, 0.0);
+  }
+  for (int r = 0; r < n; ++r) trip.emplace_back(r, r, 0.0);
+  K_.resize(n, n);
+  K_.setFromTriplets(trip.begin(), trip.end());
+  K_.makeCompressed();
+  // Column-major: entry (r1, r2) is in column r2, among its sorted row indices.
+  auto slotOf = [&](int r1, int r2) {
+    const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[r2];
+    const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[r2 + 1];
+    return static_cast<int>(std::lower_bound(begin, end, r1) - K_.innerIndexPtr());
+  };
+  slot_.clear();
+  for (const auto& t : trip) slot_.push_back(slotOf(t.row(), t.col()));
+  slot_.resize(slot_.size() - n);
+  diagonalSlot_.resize(n);
+  for (int r = 0; r < n; ++r) diagonalSlot_[r] = slotOf(r, r);
+  rhs_.resize(n);
+  patterned_ = true;
+}
+
+void SemiImplicitSystem::assemble(const Topology& topo, const Geometry& geo, const std::vector<std::uint8_t>& active,
+                                  const std::vector<int>& freeIndex, int n, const std::vector<double>& speed, double tau) {
+  if (!patterned_ || K_.rows() != n) buildPattern(topo, active, freeIndex, n);
+  double* value = K_.valuePtr();
+  std::fill(value, value + K_.nonZeros(), 0.0);
+  std::size_t next = 0;  // the pattern's products, in the same order
+  for (int i = 0; i < topo.vertexCount(); ++i) {
+    if (!active[i]) continue;
+    freeColumn(topo, freeIndex, i, [&](int k) { return geo.edgeWeight[topo.ringEdge(k)]; }, column_);
+    const std::size_t m = column_.size();
+    if (geo.isRegular(i)) {  // a vertex without area contributes nothing (its slots stay zero)
+      const double s = 0.5 * tau / geo.vertexArea[i];
+      for (std::size_t a = 0; a < m; ++a)
+        for (std::size_t b = 0; b < m; ++b) value[slot_[next + a * m + b]] += s * column_[a].second * column_[b].second;
+    }
+    next += m * m;
+  }
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    const int r = freeIndex[v];
+    if (r < 0) continue;
+    value[diagonalSlot_[r]] += geo.vertexArea[v];
+    rhs_[r] = tau * geo.vertexArea[v] * speed[v];
+  }
+}
+
+}  // namespace elastica

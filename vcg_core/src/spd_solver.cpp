@@ -1,0 +1,72 @@
+#include <elastica/spd_solver.h>
+
+#include <Eigen/SparseCholesky>
+#ifdef ELASTICA_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
+
+
+namespace elastica {
+
+struct SpdSolver::Impl {
+  using Matrix = Eigen::SparseMatrix<double>;
+  using Simplicial = Eigen::SimplicialLDLT<Matrix>;
+#ifdef ELASTICA_HAVE_CHOLMOD
+  using Supernodal = Eigen::CholmodSupernodalLLT<Matrix>;
+#else
+  using Supernodal = Simplicial;
+#endif
+  SpdBackend requested;
+  std::unique_ptr<Simplicial> simplicial;
+  std::unique_ptr<Supernodal> supernodal;
+
+  bool useCholmod(int rows) const {
+    if (!cholmodAvailable()) return false;
+    return requested == SpdBackend::Cholmod || (requested == SpdBackend::Auto && rows >= kCholmodMinRows);
+  }
+};
+
+SpdSolver::SpdSolver(SpdBackend backend) : impl_(std::make_unique<Impl>()) { impl_->requested = backend; }
+SpdSolver::~SpdSolver() = default;
+
+bool SpdSolver::cholmodAvailable() {
+#ifdef ELASTICA_HAVE_CHOLMOD
+  return true;
+#else
+  return false;
+#endif
+}
+
+void SpdSolver::analyzePattern(const Eigen::SparseMatrix<double>& A) {
+  impl_->simplicial.reset();
+  impl_->supernodal.reset();
+  if (impl_->useCholmod(static_cast<int>(A.rows()))) {
+    impl_->supernodal = std::make_unique<Impl::Supernodal>();
+    impl_->supernodal->analyzePattern(A);
+  } else {
+    impl_->simplicial = std::make_unique<Impl::Simplicial>();
+    impl_->simplicial->analyzePattern(A);
+  }
+}
+
+bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
+  if (!impl_->simplicial && !impl_->supernodal) analyzePattern(A);
+  if (impl_->supernodal) {
+    impl_->supernodal->factorize(A);
+    return impl_->supernodal->info() == Eigen::Success;
+  }
+  impl_->simplicial->factorize(A);
+  return impl_->simplicial->info() == Eigen::Success;
+}
+
+void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  if (impl_->supernodal) x = impl_->supernodal->solve(b);
+  else x = impl_->simplicial->solve(b);
+}
+
+const char* SpdSolver::backendName() const {
+  if (impl_->supernodal && cholmodAvailable()) return "CHOLMOD supernodal";
+  return "SimplicialLDLT";
+}
+
+}  // namespace elastica
