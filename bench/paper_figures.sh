@@ -4,12 +4,14 @@
 # subdivision between two stages), rendered coloured by mean curvature, with energy-versus-time
 # curves; writes docs/figures.md with the pictures, the energy table and the command.
 #
-#   bench/paper_figures.sh [--elastica PATH] [--docs DIR] [--work DIR] [--seconds S]
+#   bench/paper_figures.sh [--elastica PATH] [--docs DIR] [--work DIR] [--seconds S] [--lmc-steps N]
 #
 #   --elastica  the elastica binary (default: build/bin/elastica)
 #   --docs      where figures.md and figures/ go (default: docs)
 #   --work      scratch directory for meshes and reports (default: a new temporary directory)
-#   --seconds   wall-time budget of each Laplacian-of-H stage (default: 45; elastica: twice that)
+#   --seconds   wall-time budget of each elastica stage (default: 90)
+#   --lmc-steps step budget of each Laplacian-of-H stage (default: 30000; a step budget, not a
+#               time budget, so that the pictures do not depend on the machine's speed or load)
 #
 # Takes about four minutes on two cores. Needs f3d, xvfb, gnuplot-nox, jq and imagemagick
 # (scripts/setup.sh). Every number on the page comes from this run's JSON reports.
@@ -17,14 +19,15 @@ set -euo pipefail
 
 command_line="bench/paper_figures.sh${*:+ $*}"  # for the page, before the options are parsed
 root=$(cd "$(dirname "$0")/.." && pwd)
-elastica=$root/build/bin/elastica docs=$root/docs work="" seconds=45
+elastica=$root/build/bin/elastica docs=$root/docs work="" seconds=90 lmc_steps=30000
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --elastica) elastica=$2; shift 2 ;;
     --docs) docs=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
     --seconds) seconds=$2; shift 2 ;;
-    -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --lmc-steps) lmc_steps=$2; shift 2 ;;
+    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) printf 'paper_figures: unknown option %s (try --help)\n' "$1" >&2; exit 2 ;;
   esac
 done
@@ -48,13 +51,13 @@ cage_args=(frame --segments 2,1 --window 4 --level 1)
 # ---------------------------------------------------------------- the three flows
 # Each flow: stage 0 on the cage, `elastica subdivide`, stage 1 on the subdivided result. The
 # elastica flow runs semi-implicit with edge flips and stops at its energy plateau (or the budget);
-# the Laplacian of H runs the paper's explicit scheme for the wall-time budget (its energy is not a
+# the Laplacian of H runs the paper's explicit scheme for a step budget (its energy is not a
 # Lyapunov function, so there is no plateau to wait for); the bilaplacian flow is explicit only and
 # shrinks the tubes until they collapse (the divergence guard stops it; the script measures when),
 # so it gets a step budget that stops it while there is still a shape to look at.
 declare -A stage_opts=(
-  [elastica]="--scheme semi-implicit --remesh --max-seconds $((2 * seconds))"
-  [lmc]="--max-seconds $seconds"
+  [elastica]="--scheme semi-implicit --remesh --max-seconds $seconds"
+  [lmc]="--max-steps $lmc_steps"
   [bilaplacian]="--max-steps 1500"
 )
 declare -A scheme_name=([elastica]="semi-implicit, edge flips" [lmc]="explicit (paper)" [bilaplacian]="explicit (paper)")
@@ -185,7 +188,8 @@ EOF
   $collapse_steps steps (\`$collapse_stop\`), hence the step budget above. Final E: $bil_end.
 - **Laplacian of mean curvature** (Fig. 6): keeps the enclosed volume and evens out H, so the tubes
   become round but stay uneven, thicker where they meet and thinner along the straight runs: a
-  flow heading for constant mean curvature rather than for low bending energy. Its E levels off
+  flow heading for constant mean curvature rather than for low bending energy (run far longer, the
+  middle bar thins to a neck that pinches, as constant-mean-curvature flows do). Its E levels off
   far above the elastica's (final $lmc_end); the explicit step (τ = A_min²/150) makes the fine
   stage slow, which is the paper's reason for coarse-to-fine.
 - **Discrete elastica** (Fig. 7): the tubes round off first (second picture: $early_steps
