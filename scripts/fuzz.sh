@@ -13,6 +13,8 @@
 # One line per target (executions, seconds, coverage, crashes) goes to build-fuzz/fuzz-summary.txt.
 #
 # For a long campaign: scripts/fuzz.sh 3600 fuzz_read_ply   (an hour on one target)
+# FUZZ_RUNS=N stops each target after N executions if that comes before SECONDS:
+#   FUZZ_RUNS=1000000 scripts/fuzz.sh 3600 fuzz_read_obj
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -41,7 +43,7 @@ for t in "${targets[@]}"; do
   log=$build/$t.log
   # One process (the machine has 2 cores); -timeout catches hangs, -rss_limit_mb huge allocations.
   if ! nice "$build/bin/$t" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=25 \
-      -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1; then
+      -rss_limit_mb=2048 ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1; then
     failed=1
     echo "fuzz.sh: $t FAILED, see $log and $build/artifacts/" >&2
   fi
