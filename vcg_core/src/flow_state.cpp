@@ -209,7 +209,7 @@ bool FlowState::trySemiImplicitStep(double tau) {
   trip.clear();
   std::vector<std::pair<int, double>> column;  // (row, C_ij) of the free vertices around active i
   for (int i = 0; i < nv; ++i) {
-    if (!roles_.active[i] || !geo_.isRegular(i)) continue;
+    if (!roles_.active[i]) continue;
     column.clear();
     double diagonal = 0;
     for (int k = topo_.ringBegin(i); k < topo_.ringEnd(i); ++k) {
@@ -219,7 +219,10 @@ bool FlowState::trySemiImplicitStep(double tau) {
       if (r >= 0) column.emplace_back(r, w);
     }
     if (freeIndex_[i] >= 0) column.emplace_back(freeIndex_[i], diagonal);
-    const double s = 0.5 * tau / geo_.vertexArea[i];
+    // A vertex without area (degenerate around it) contributes zeros, but its entries stay: the
+    // pattern was analysed once and must not change with the geometry (found by fuzzing: a vertex
+    // that became regular added entries outside it, and the factorisation wrote past its buffers).
+    const double s = geo_.isRegular(i) ? 0.5 * tau / geo_.vertexArea[i] : 0.0;
     for (const auto& [r1, c1] : column)
       for (const auto& [r2, c2] : column) trip.emplace_back(r1, r2, s * c1 * c2);
   }
