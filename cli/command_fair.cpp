@@ -20,7 +20,7 @@ namespace {
 
 struct FairArgs {
   std::string input, output, report, selectedFaces;
-  bool ascii = false, color = false, selected = false;
+  bool ascii = false, color = false, progress = false, selected = false;
   FlowOptions flow;
 };
 
@@ -68,7 +68,7 @@ void runFair(FairArgs& a) {
     j["flow"] = flowName(a.flow.flow);
     return j;
   };
-  a.flow.progress = terminalProgress("fair");
+  a.flow.progress = terminalProgress("fair", a.progress);
   FlowReport report;
   try {
     report = fair(mesh, restricted ? &selection : nullptr, a.flow);
@@ -89,8 +89,6 @@ void runFair(FairArgs& a) {
     throw;
   }
   endProgressLine();
-  if (report.stop == StopReason::Cancelled && interrupted())
-    throw Error("interrupted: nothing written");
 
   // Keep the input's other attributes when the connectivity is unchanged (no subdivision, no flips).
   if (mesh.faces == inputFaces) writePositions(vm, mesh.positions);
@@ -136,6 +134,7 @@ void addFairCommand(CLI::App& app) {
                   "lines; # starts a comment); two rings around stay fixed")
       ->excludes(selected);
   cmd->add_option("--report", args->report, "write a JSON report (energies, steps, stages, energy history)");
+  addProgressFlag(*cmd, args->progress);
   cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
   cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
   cmd->callback([args] { runFair(*args); });

@@ -20,7 +20,7 @@ namespace {
 
 struct FillArgs {
   std::string input, output, report;
-  bool ascii = false, color = false;
+  bool ascii = false, color = false, progress = false;
   HoleFillOptions fill;
 };
 
@@ -57,7 +57,7 @@ void runFill(FillArgs& a) {
   TriMesh mesh = toTriMesh(vm);
   const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
 
-  a.fill.flow.progress = terminalProgress("fill");
+  a.fill.flow.progress = terminalProgress("fill", a.progress);
   std::vector<std::uint8_t> isNew;
   HoleFillReport report;
   try {
@@ -67,7 +67,6 @@ void runFill(FillArgs& a) {
     throw;
   }
   endProgressLine();
-  if (interrupted()) throw Error("interrupted: nothing written");
 
   // New elements are appended: the input's own keep every attribute the file gave them.
   applyWelds(report.welds, vm);
@@ -159,6 +158,7 @@ void addFillCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber);
   addFlowOptions(*cmd, args->fill.flow);
   cmd->add_option("--report", args->report, "write a JSON report (one entry per hole)");
+  addProgressFlag(*cmd, args->progress);
   cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
   cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
   cmd->callback([args] { runFill(*args); });

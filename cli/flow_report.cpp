@@ -5,18 +5,13 @@
 
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <fstream>
 
 namespace elastica::cli {
 namespace {
 
-std::atomic<bool> gInterrupted{false};
 bool gLineDrawn = false;
-
-extern "C" void onSigint(int) { gInterrupted = true; }
 
 }  // namespace
 
@@ -59,20 +54,21 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
   });
 }
 
-bool interrupted() { return gInterrupted; }
-
-std::function<bool(const FlowProgress&)> terminalProgress(const std::string& label) {
-  std::signal(SIGINT, onSigint);
+std::function<bool(const FlowProgress&)> terminalProgress(const std::string& label, bool always) {
   const bool tty = isatty(STDERR_FILENO);
-  return [tty, label](const FlowProgress& p) {
-    if (tty) {
-      std::fprintf(stderr, "\r%s: level %d  step %lld  E %.6g  lambda %.3g  %.1f s   ", label.c_str(), p.level, p.step,
-                   p.energy, p.lambda, p.seconds);
+  return [tty, always, label](const FlowProgress& p) {
+    if (tty || always) {
+      std::fprintf(stderr, "%s%s: level %d  step %lld  E %.6g  lambda %.3g  %.1f s%s", tty ? "\r" : "", label.c_str(),
+                   p.level, p.step, p.energy, p.lambda, p.seconds, tty ? "   " : "\n");
       std::fflush(stderr);
-      gLineDrawn = true;
+      gLineDrawn = tty;
     }
-    return !gInterrupted;
+    return true;
   };
+}
+
+void addProgressFlag(CLI::App& cmd, bool& always) {
+  cmd.add_flag("--progress", always, "print progress on stderr, one line per check, even when it is not a terminal");
 }
 
 void endProgressLine() {

@@ -3,6 +3,7 @@
 
 #include <elastica/flow.h>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -20,14 +21,15 @@ const char* stopName(StopReason s);
 /// Writes `j` to `path` atomically. @throws IoError.
 void writeJson(const std::string& path, const nlohmann::json& j);
 
-/// A progress callback that redraws one line on stderr when it is a terminal (quiet otherwise),
-/// and cancels the run after Ctrl-C.
-std::function<bool(const FlowProgress&)> terminalProgress(const std::string& label);
+/// A progress callback that redraws one line on stderr when it is a terminal, or with `always`
+/// prints one line per check whatever stderr is (--progress: logs, wrappers); quiet otherwise.
+/// Ctrl-C is not its business: main() installs io::installInterruptHandlers.
+std::function<bool(const FlowProgress&)> terminalProgress(const std::string& label, bool always);
+
+/// Registers --progress (terminalProgress's `always`) on `cmd`.
+void addProgressFlag(CLI::App& cmd, bool& always);
 
 /// Clears the progress line (if one was drawn).
 void endProgressLine();
-
-/// True once SIGINT was received (Ctrl-C); installing the handler is part of terminalProgress.
-bool interrupted();
 
 }  // namespace elastica::cli

@@ -1,12 +1,16 @@
 // elastica: fair triangle meshes with the discrete elastica flow (Yoshizawa & Belyaev 2002).
-// Exit codes: 0 success, 1 the work failed (message on stderr), 2 bad command line.
+// Exit codes: 0 success, 1 the work failed (message on stderr), 2 bad command line. On SIGINT
+// (Ctrl-C), SIGTERM or SIGHUP the file being written is deleted and the process dies of the
+// signal (a shell reports 128 + its number: 130 for Ctrl-C); existing files are never touched.
 #include "commands.h"
 
 #include <elastica/errors.h>
+#include <elastica/io/atomic_file.h>
 
 #include <iostream>
 
 int main(int argc, char** argv) {
+  elastica::io::installInterruptHandlers("elastica");
   CLI::App app{"elastica: fair triangle meshes with the discrete elastica flow\n"
                "(Yoshizawa & Belyaev, Fair Triangle Mesh Generation with Discrete Elastica, GMP 2002)"};
   app.require_subcommand(1);

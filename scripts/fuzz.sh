@@ -13,6 +13,8 @@
 # One line per target (executions, seconds, coverage, crashes) goes to build-fuzz/fuzz-summary.txt.
 #
 # For a long campaign: scripts/fuzz.sh 3600 fuzz_read_ply   (an hour on one target)
+# FUZZ_RUNS=N stops each target after N executions if that comes before SECONDS:
+#   FUZZ_RUNS=1000000 scripts/fuzz.sh 3600 fuzz_read_obj
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
@@ -39,9 +41,10 @@ for t in "${targets[@]}"; do
   seeds=(tests/fuzz/corpus/"$format")
   [[ $format != flow && -d tests/hostile ]] && seeds+=(tests/hostile)
   log=$build/$t.log
-  # One process (the machine has 2 cores); -timeout catches hangs, -rss_limit_mb huge allocations.
-  if ! nice "$build/bin/$t" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=25 \
-      -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1; then
+  # One process (the machine has 2 cores); -timeout catches hangs (generous: a niced fuzzer on a
+  # loaded machine once exceeded 25 s on an input that takes 0.2 s), -rss_limit_mb huge allocations.
+  if ! nice "$build/bin/$t" "$corpus" "${seeds[@]}" -max_total_time="$seconds" -timeout=60 \
+      -rss_limit_mb=2048 ${FUZZ_RUNS:+-runs=$FUZZ_RUNS} -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1; then
     failed=1
     echo "fuzz.sh: $t FAILED, see $log and $build/artifacts/" >&2
   fi

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -279,6 +280,21 @@ TEST(Cli, FrameWindowAndSubdivide) {
   for (size_t v = 0; v < w4.vertices.size(); ++v)
     for (int c = 0; c < 3; ++c) EXPECT_EQ(s.vertices[v][c], w4.vertices[v][c]) << v;
   EXPECT_EQ(runElastica("subdivide " + dir.file("w4.ply") + " --levels 0 -o " + dir.file("t.ply")).exitCode, 2);
+}
+
+// --max-seconds ends a run that would go on for hours (no energy plateau, no step limit) and it
+// is still written; the bound is generous (10× the limit), this is not a speed test.
+TEST(Cli, MaxSecondsEndsARunThatWouldNotStop) {
+  ScratchDir dir("cli-max-seconds");
+  ASSERT_EQ(runElastica("generate icosphere --level 3 --noise 0.05 -o " + dir.file("n.ply")).exitCode, 0);
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
+                                        " --max-steps 1000000000 --energy-tol 0 --max-seconds 0.5 --subdivide 2");
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("(max_seconds)"), std::string::npos) << run.output;
+  EXPECT_TRUE(std::filesystem::exists(dir.file("f.ply")));
+  EXPECT_LT(seconds, 5.0);
 }
 
 TEST(Cli, HelpForProgramAndSubcommands) {

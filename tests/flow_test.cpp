@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -334,6 +335,53 @@ TEST(Flow, LimitsCancellationAndErrors) {
   FlowOptions bad;
   bad.stepFactor = -1;
   EXPECT_THROW(fair(m, nullptr, bad), InvalidInputError);
+}
+
+// The step and time limits hold in both schemes, however far the energy is from a plateau
+// (tolerance 0), including the semi-implicit scheme's rejected attempts. The time limit is
+// checked with a generous bound: 10× the limit, not a speed measurement.
+TEST(Flow, StepAndTimeLimitsHoldInBothSchemes) {
+  // 2,562 vertices: the semi-implicit scheme needs seconds to its plateau, the explicit one hours.
+  const TriMesh noisy = radialNoise(shapes::icosphere(1.0, 4), 0.05, 11);
+  for (Scheme scheme : {Scheme::Explicit, Scheme::SemiImplicit}) {
+    FlowOptions opt;
+    opt.scheme = scheme;
+    opt.energyTolerance = opt.plateauTolerance = 0;
+    opt.maxSteps = 7;
+    TriMesh m = noisy;
+    FlowReport r = fair(m, nullptr, opt);
+    EXPECT_EQ(r.steps, 7);
+    EXPECT_EQ(r.stop, StopReason::MaxSteps);
+
+    opt.maxSteps = 1'000'000'000;
+    opt.maxSeconds = 0.5;
+    opt.subdivisionLevels = 1;
+    m = noisy;
+    const auto start = std::chrono::steady_clock::now();
+    r = fair(m, nullptr, opt);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_EQ(r.stop, StopReason::MaxSeconds);
+    EXPECT_GE(r.seconds, 0.5);
+    EXPECT_LT(seconds, 5.0);
+  }
+}
+
+// A limit reached just as a stage reaches its plateau ends the run there: no subdivision into a
+// stage that could not take a step.
+TEST(Flow, LimitAtAStageEndDoesNotSubdivide) {
+  const TriMesh noisy = radialNoise(shapes::icosphere(1.0, 1), 0.05, 5);
+  FlowOptions opt;
+  opt.subdivisionLevels = 1;
+  TriMesh m = noisy;
+  const FlowReport full = fair(m, nullptr, opt);
+  ASSERT_EQ(full.stages.size(), 2u);
+  opt.maxSteps = full.stages[0].steps;
+  m = noisy;
+  const FlowReport r = fair(m, nullptr, opt);
+  EXPECT_EQ(r.stop, StopReason::MaxSteps);
+  EXPECT_EQ(r.steps, full.stages[0].steps);
+  EXPECT_EQ(r.stages.size(), 1u);
+  EXPECT_EQ(m.faceCount(), noisy.faceCount());
 }
 
 // A step 7,500× the paper's is unstable: the run stops with an error and the mesh is rolled back to

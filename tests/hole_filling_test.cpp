@@ -183,6 +183,40 @@ TEST(HoleFilling, OnlyHolesWithinTheLimitAreFilled) {
   for (int i = 0; i < before.vertexCount(); ++i) EXPECT_EQ(mesh.positions[i], before.positions[i]);
 }
 
+// --max-steps and --max-seconds bound the whole fill, not each hole: the holes' flows share them.
+TEST(HoleFilling, FlowLimitsHoldOverAllHoles) {
+  // Two holes on opposite sides of a cylinder, each far from its open ends.
+  TriMesh mesh = cutAway(shapes::cylinder(1, 4, 48, 32), [](const Vec3& p) {
+    return (p - Vec3(1, 0, 2)).norm() < 0.5 || (p - Vec3(-1, 0, 2)).norm() < 0.5;
+  });
+  HoleFillOptions opt;
+  opt.maxHoleEdges = 40;
+  opt.flow.maxSteps = 7;  // each hole alone takes more
+  TriMesh m = mesh;
+  HoleFillReport r = fillHoles(m, nullptr, opt);
+  ASSERT_EQ(r.filledCount(), 2);
+  std::vector<long long> steps;
+  for (const HoleReport& h : r.holes) {
+    if (!h.filled) continue;
+    steps.push_back(h.steps);
+    EXPECT_EQ(h.stop, StopReason::MaxSteps);
+  }
+  EXPECT_EQ(steps, (std::vector<long long>{7, 0}));
+
+  // The explicit scheme with no plateau would run for hours on each hole.
+  opt.flow = HoleFillOptions::defaultFillFlow();
+  opt.flow.scheme = Scheme::Explicit;
+  opt.flow.energyTolerance = 0;
+  opt.flow.maxSteps = 1'000'000'000;
+  opt.flow.maxSeconds = 0.5;
+  m = mesh;
+  r = fillHoles(m, nullptr, opt);
+  ASSERT_EQ(r.filledCount(), 2);
+  for (const HoleReport& h : r.holes)
+    if (h.filled) EXPECT_EQ(h.stop, StopReason::MaxSeconds) << h.reason;
+  EXPECT_LT(r.seconds, 5.0);  // a generous bound on a 0.5 s limit
+}
+
 // Scaled by powers of two, every product is exact: any absolute threshold would show as a different
 // decision (a split, a flip, a step accepted) and a different result. (×1000 is not exact, and the
 // regular icosphere has exact ties in the refinement rule that rounding then breaks either way.)

@@ -4,6 +4,7 @@
 #include <elastica/io/mesh_reader.h>
 #include <elastica/io/mesh_writer.h>
 #include <elastica/shapes.h>
+#include <elastica/sign_convention.h>
 #include <elastica/vcg_adapter.h>
 
 #include <gtest/gtest.h>
@@ -137,6 +138,29 @@ TEST(MeshIo, ClearErrors) {
   EXPECT_NE(errorOf(dir.file("nofaces.off")).find("no triangles"), std::string::npos);
   // Every message starts with the file name.
   EXPECT_EQ(errorOf(dir.file("e.ply")).rfind(dir.file("e.ply"), 0), 0u);
+}
+
+// vcglib's PlyInfo::AddPerVertexFloatAttribute remembers the first PlyInfo of the process in a
+// static: through it, only the first file written kept its curvature properties.
+TEST(MeshIo, EveryWriteKeepsItsCurvatureProperties) {
+  ScratchDir dir("attributes");
+  for (int i = 0; i < 3; ++i) {
+    VcgMesh vm;
+    fromTriMesh(shapes::icosphere(1.0, 1), vm);
+    const std::vector<double> H(vm.vert.size(), 1.0 + i), K(vm.vert.size(), 2.0 + i);
+    storeCurvature(vm, H, K);
+    io::PlyWriteOptions opt;
+    opt.binary = false;
+    opt.curvature = true;
+    const std::string path = dir.file("c" + std::to_string(i) + ".ply");
+    io::writePly(path, vm, opt);
+    const test::AsciiPly ply = test::readAsciiPly(path);
+    const int h = ply.column("mean_curvature"), k = ply.column("gaussian_curvature");
+    ASSERT_GE(h, 0) << "write " << i;
+    ASSERT_GE(k, 0) << "write " << i;
+    EXPECT_EQ(ply.vertices[0][h], reportedMeanCurvature(1.0 + i));
+    EXPECT_EQ(ply.vertices[0][k], 2.0 + i);
+  }
 }
 
 TEST(MeshIo, OutputChecksAndAtomicWrite) {

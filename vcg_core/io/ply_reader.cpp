@@ -12,6 +12,7 @@
 #include <cctype>
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -30,6 +31,15 @@ const std::map<std::string_view, int>& typeSizes() {
 }
 
 bool isFloatType(std::string_view t) { return t == "float" || t == "float32" || t == "double" || t == "float64"; }
+// A value read from the file, for a message: whole numbers as integers, anything else as %g
+// (converting 1e300 or NaN to an integer type would be undefined).
+std::string numberText(double v) {
+  if (v == std::floor(v) && std::fabs(v) < 0x1p62) return std::to_string(static_cast<long long>(v));
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
 bool isSignedType(std::string_view t) { return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32"; }
 
 constexpr std::uintmax_t kMaxHeaderBytes = 1 << 20;
@@ -143,7 +153,15 @@ class Body {
       const std::string_view token(data_.data() + start, pos_ - start);
       double x = 0;
       if (!parseNumber(token, x)) fail(path_, where + ": " + quote(token) + " is not a number");
-      if (!isFloatType(type) && x != std::floor(x)) fail(path_, where + ": " + quote(token) + " is not an integer");
+      if (!isFloatType(type)) {
+        if (x != std::floor(x)) fail(path_, where + ": " + quote(token) + " is not an integer");
+        // Within the declared type, as a binary file's value would be (found by fuzzing: a list
+        // count of 1e300 then overflowed a conversion to an integer).
+        const int bits = 8 * typeSizes().at(type);
+        const double lo = isSignedType(type) ? -std::ldexp(1.0, bits - 1) : 0.0;
+        const double hi = std::ldexp(1.0, isSignedType(type) ? bits - 1 : bits) - 1;
+        if (x < lo || x > hi) fail(path_, where + ": " + quote(token) + " is out of range for type " + type);
+      }
       // A value declared float is what a float holds, as in a binary file.
       return type == "float" || type == "float32" ? static_cast<double>(static_cast<float>(x)) : x;
     }
@@ -217,13 +235,13 @@ void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadR
           if (k == x) p[0] = v;
           if (k == y) p[1] = v;
           if (k == z) p[2] = v;
-          if (k == flags) sel = sel || (static_cast<long long>(v) & VcgFace::SELECTED) != 0;
+          if (k == flags) sel = sel || (std::fabs(v) < 0x1p62 && (static_cast<long long>(v) & VcgFace::SELECTED) != 0);
           if (k == selectedProperty) sel = sel || v != 0;
           continue;
         }
         const double n = body.read(prop.countType, where);
         if (n < 0 || n > kMaxListSize)
-          fail(path, where + ": a list of " + std::to_string(static_cast<long long>(n)) + " entries (at most " +
+          fail(path, where + ": a list of " + numberText(n) + " entries (at most " +
                          std::to_string(kMaxListSize) + " read here)");
         values.resize(static_cast<size_t>(n));
         for (double& v : values) v = body.read(prop.type, where);
@@ -231,9 +249,11 @@ void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadR
         if (values.size() < 3)
           fail(path, "face " + std::to_string(i) + " has " + std::to_string(values.size()) + " vertices (a face needs at least 3)");
         for (double v : values)
-          if (v < 0 || v >= static_cast<double>(vertexCount))
-            fail(path, "face " + std::to_string(i) + " refers to vertex " + std::to_string(static_cast<long long>(v)) +
-                           ", but the file has " + std::to_string(vertexCount) + " vertices");
+          if (!(v >= 0 && v < static_cast<double>(vertexCount)))  // NaN too (a float-typed index list)
+            fail(path, "face " + std::to_string(i) + " refers to vertex " + numberText(v) + ", but the file has " +
+                           std::to_string(vertexCount) + " vertices");
+          else if (v != std::floor(v))
+            fail(path, "face " + std::to_string(i) + " refers to vertex " + numberText(v) + " (not a whole number)");
         if (values.size() > 3) ++report.polygonsTriangulated;
         for (size_t c = 1; c + 1 < values.size(); ++c) {
           triangles.push_back({int(values[0]), int(values[c]), int(values[c + 1])});

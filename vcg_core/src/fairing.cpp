@@ -222,7 +222,9 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
     stage.seconds = run.elapsed() - stageStart;
     report.stages.push_back(stage);
     report.energyFinal = stage.energy;
-    if (run.stopped || !refineLater) break;
+    // A limit reached just as the stage converged stops the run before it subdivides: a finer
+    // mesh costs four times the memory and work, and its stage could not take a step.
+    if (run.stopped || !refineLater || run.limitReached()) break;
     report.stop = StopReason::Converged;  // the next stage decides
     subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
   }

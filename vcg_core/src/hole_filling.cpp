@@ -39,8 +39,17 @@ std::vector<double> borderEdgeLengths(const TriMesh& mesh, const Topology& topo,
 
 // Refines, embeds and fairs the patch (the faces flagged in `patchFace`) of `sub`, a piece of the
 // mesh around one hole. The vertices from `firstNew` on are the patch's own; nothing else moves.
+// The flow's step and time limits hold for the whole fill: each hole's flow gets what the work
+// before it left (a limit already used up stops the flow at once; it keeps the bi-Laplace patch).
+FlowOptions remainingFlowBudget(const FlowOptions& flow, long long stepsUsed, double secondsUsed) {
+  FlowOptions f = flow;
+  f.maxSteps = std::max<long long>(flow.maxSteps - stepsUsed, 0);
+  if (flow.maxSeconds > 0) f.maxSeconds = std::max(flow.maxSeconds - secondsUsed, 1e-9);  // 0 would mean none
+  return f;
+}
+
 void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
-                  const HoleFillOptions& opt, HoleReport& hole) {
+                  const HoleFillOptions& opt, const FlowOptions& flowBudget, HoleReport& hole) {
   refinePatch(sub, patchFace, sigma, opt.refinement);
   if (opt.stopAfter == FillStage::Refinement || sub.vertexCount() == firstNew) return;
   auto freeVertices = [&] {
@@ -63,7 +72,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
 
   const std::vector<std::uint8_t> free = freeVertices();
   relaxTangentially(sub, free);
-  FlowOptions flow = opt.flow;
+  FlowOptions flow = flowBudget;
   flow.boundary = BoundaryMode::Fixed;
   const TriMesh start = sub;
   try {
@@ -240,6 +249,7 @@ HoleFillReport fillHoles(TriMesh& output, std::vector<std::uint8_t>* newFaceFlag
   }
   // Settled per kept vertex, in the order the welds were made.
   std::stable_sort(welds.begin(), welds.end(), [](const WeldRecord& a, const WeldRecord& b) { return a.weld.kept < b.weld.kept; });
+  long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
   for (const HoleLoop& loop : loops) {
     const auto holeStart = std::chrono::steady_clock::now();
     HoleReport hole;
@@ -280,7 +290,9 @@ HoleFillReport fillHoles(TriMesh& output, std::vector<std::uint8_t>* newFaceFlag
         const auto at = std::find(loop.vertices.begin(), loop.vertices.end(), sub.vertex[i]);
         if (at != loop.vertices.end()) sigma[i] = borderSigma[at - loop.vertices.begin()];
       }
-      restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, hole);
+      restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)),
+                   hole);
+      flowSteps += hole.steps;
 
       auto global = [&](int i) { return i < subVertices ? sub.vertex[i] : firstVertex + i - subVertices; };
       for (int i = subVertices; i < sub.mesh.vertexCount(); ++i) mesh.positions.push_back(sub.mesh.positions[i]);

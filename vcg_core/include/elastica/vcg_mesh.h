@@ -17,6 +17,16 @@ class VcgVertex : public vcg::Vertex<VcgUsedTypes, vcg::vertex::Coord3d, vcg::ve
 class VcgFace : public vcg::Face<VcgUsedTypes, vcg::face::VertexRef, vcg::face::Normal3d, vcg::face::Qualityd,
                                  vcg::face::Color4b, vcg::face::FFAdj, vcg::face::VFAdj, vcg::face::Mark,
                                  vcg::face::BitFlags> {};
-class VcgMesh : public vcg::tri::TriMesh<std::vector<VcgVertex>, std::vector<VcgFace>> {};
+class VcgMesh : public vcg::tri::TriMesh<std::vector<VcgVertex>, std::vector<VcgFace>> {
+ public:
+  VcgMesh() = default;
+  // This vcglib's TriMesh copy constructor copies nothing, and its implicit assignment would share
+  // the named attributes' storage (freed twice below): copy with vcg::tri::Append::MeshCopy.
+  VcgMesh(const VcgMesh&) = delete;
+  VcgMesh& operator=(const VcgMesh&) = delete;
+  // ~TriMesh frees the elements but not the named attributes (its ClearAttributes call is
+  // commented out): storeCurvature's and the writers' per-vertex and per-face attributes leaked.
+  ~VcgMesh() { ClearAttributes(); }
+};
 
 }  // namespace elastica
