@@ -19,10 +19,9 @@ void computeCurvature(const Topology& topo, const Geometry& geo, const std::vect
   out.g.resize(nv);
 
   const bool paperLambda = opt.h2k == H2KTreatment::PaperLambda;
-  std::size_t clamped = 0;
+  auto add = [](std::size_t& a, std::size_t b) { a += b; };
   // H and K; with the clamp (default) also the flow's H and g, in the same pass.
-#pragma omp parallel for reduction(+ : clamped) schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
+  std::size_t clamped = parallelReduce(nv, std::size_t{0}, [&](int i, std::size_t& clampedHere) {
     double h = 0, k = 0;
     if (geo.isRegular(i)) {
       // Δ_B P = 2H N (Meyer's normalisation): H = ½ N·Δ_B P.
@@ -33,12 +32,12 @@ void computeCurvature(const Topology& topo, const Geometry& geo, const std::vect
     }
     out.H[i] = h;
     out.K[i] = k;
-    if (paperLambda) continue;
+    if (paperLambda) return;
     const double g = h * h - k;
     out.Hflow[i] = h;
     out.g[i] = std::max(g, 0.0);
-    if (g < 0) ++clamped;
-  }
+    if (g < 0) ++clampedHere;
+  }, add);
   out.lambda = 1;
   out.lambdaVertices = 0;
   out.clampedVertices = clamped;
@@ -61,16 +60,13 @@ void computeCurvature(const Topology& topo, const Geometry& geo, const std::vect
   }
   if (out.lambdaVertices > 0) out.lambda = std::max(lambda, opt.lambdaFloor);
 
-  clamped = 0;
-#pragma omp parallel for reduction(+ : clamped) schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
+  out.clampedVertices = parallelReduce(nv, std::size_t{0}, [&](int i, std::size_t& clampedHere) {
     const double h = inD(i) ? out.H[i] / out.lambda : out.H[i];
     const double g = h * h - out.K[i];
     out.Hflow[i] = h;
     out.g[i] = std::max(g, 0.0);
-    if (g < 0) ++clamped;
-  }
-  out.clampedVertices = clamped;
+    if (g < 0) ++clampedHere;
+  }, add);
 }
 
 Curvature computeCurvature(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,

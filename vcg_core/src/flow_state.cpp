@@ -108,17 +108,20 @@ void FlowState::setPositions(const std::vector<Vec3>& p) {
 void FlowState::evaluateGeometry() {
   if (geometryEvaluated_) return;
   computeGeometry(topo_, mesh_.positions, opt_.area, geo_);
-  double area = 0, minArea = std::numeric_limits<double>::infinity();
+  struct Tally {
+    double area = 0, minArea = std::numeric_limits<double>::infinity();
+  };
   const double floor = 1e-12 * geo_.meanEdgeLength * geo_.meanEdgeLength;
-  const int nf = topo_.faceCount();
-#pragma omp parallel for reduction(+ : area) reduction(min : minArea) schedule(static) if (nf > kParallelGrain)
-  for (int f = 0; f < nf; ++f) {
-    if (!roles_.activeFace[f]) continue;
-    area += geo_.faceArea[f];
-    if (geo_.faceArea[f] > floor) minArea = std::min(minArea, geo_.faceArea[f]);
-  }
-  activeArea_ = area;
-  activeMinArea_ = std::isfinite(minArea) ? minArea : 0.0;
+  const Tally t = parallelReduce(topo_.faceCount(), Tally{}, [&](int f, Tally& tally) {
+    if (!roles_.activeFace[f]) return;
+    tally.area += geo_.faceArea[f];
+    if (geo_.faceArea[f] > floor) tally.minArea = std::min(tally.minArea, geo_.faceArea[f]);
+  }, [](Tally& a, const Tally& b) {
+    a.area += b.area;
+    a.minArea = std::min(a.minArea, b.minArea);
+  });
+  activeArea_ = t.area;
+  activeMinArea_ = std::isfinite(t.minArea) ? t.minArea : 0.0;
   geometryEvaluated_ = true;
 }
 
@@ -178,8 +181,8 @@ double FlowState::checkedMinArea() const {
 double FlowState::explicitStep() {
   evaluate();
   const double dt = opt_.flow == FlowType::Bilaplacian ? bilaplacianStep() : normalStep();
-  slideBoundary();
   invalidate();
+  slideBoundary();
   return dt;
 }
 
@@ -188,12 +191,11 @@ void FlowState::speed(std::vector<double>& F) {
   const bool elastica = opt_.flow == FlowType::Elastica;
   const int nv = topo_.vertexCount();
   F.assign(nv, 0.0);
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
-    if (!roles_.free[i]) continue;
+  parallelFor(nv, [&](int i) {
+    if (!roles_.free[i]) return;
     // Paper sign convention (H = −1/r on an outward sphere): F = −Δ_B H − 2H(H² − K) decreases E.
     F[i] = -lh_[i] - (elastica ? 2 * curv_.Hflow[i] * curv_.g[i] : 0.0);
-  }
+  });
 }
 
 double FlowState::normalStep() {
@@ -205,39 +207,37 @@ double FlowState::normalStep() {
   if (drift) tangentialDrift(topo_, geo_, mesh_.positions, roles_.free, driftScratch_, drift_);
   const bool elastica = opt_.flow == FlowType::Elastica;
   const int nv = topo_.vertexCount();
-  bool finite = true;
-#pragma omp parallel for reduction(&& : finite) schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
-    if (!roles_.free[i]) continue;
+  const int nonFinite = parallelReduce(nv, 0, [&](int i, int& bad) {
+    if (!roles_.free[i]) return;
     // The speed of speed(), inline: F = −Δ_B H − 2H(H² − K) (paper sign convention).
     const double F = -lh_[i] - (elastica ? 2 * curv_.Hflow[i] * curv_.g[i] : 0.0);
     Vec3& p = mesh_.positions[i];
     p += tau * F * geo_.vertexNormal[i];
     if (drift) p += eps * drift_[i];
-    finite = finite && p.allFinite();
-  }
-  if (!finite) throw NumericalError("a vertex position became non-finite");
+    bad += !p.allFinite();
+  }, [](int& a, int b) { a += b; });
+  if (nonFinite > 0) throw NumericalError("a vertex position became non-finite");
   return tau;
 }
 
 double FlowState::bilaplacianStep() {
   uniformBiUmbrella(topo_, mesh_.positions, roles_.free, u_, drift_);
   const int nv = topo_.vertexCount();
-  bool finite = true;
-#pragma omp parallel for reduction(&& : finite) schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
-    if (!roles_.free[i]) continue;
+  const int nonFinite = parallelReduce(nv, 0, [&](int i, int& bad) {
+    if (!roles_.free[i]) return;
     mesh_.positions[i] -= opt_.bilaplacianStep * drift_[i];
-    finite = finite && mesh_.positions[i].allFinite();
-  }
-  if (!finite) throw NumericalError("a vertex position became non-finite");
+    bad += !mesh_.positions[i].allFinite();
+  }, [](int& a, int b) { a += b; });
+  if (nonFinite > 0) throw NumericalError("a vertex position became non-finite");
   // U0² ≈ (ℓ⁴/16) Δ², so this step is worth about bilaplacianStep·ℓ⁴/16 of flow time.
   const double ell = geo_.meanEdgeLength;
   return opt_.bilaplacianStep * ell * ell * ell * ell / 16;
 }
 
 void FlowState::slideBoundary() {
-  if (slider_ && roles_.slidingCount > 0) slider_->slide(topo_, mesh_.positions, roles_.sliding, kSlideRate);
+  if (!slider_ || roles_.slidingCount == 0) return;
+  slider_->slide(topo_, mesh_.positions, roles_.sliding, kSlideRate);
+  invalidate();
 }
 
 bool FlowState::trySemiImplicitStep(double tau) {
@@ -267,6 +267,7 @@ bool FlowState::trySemiImplicitStep(double tau) {
   const double energyBefore = energy();
   const double energyLimit = energyBefore * (1 + kEnergySlack) + 1e-12;
   faceNormalBefore_ = geo_.faceNormal;
+  double largest = 0;
   for (int v = 0; v < nv; ++v) {
     const int r = freeIndex_[v];
     if (r < 0) continue;
@@ -276,16 +277,18 @@ bool FlowState::trySemiImplicitStep(double tau) {
       ring += (saved_[topo_.ringVertex(k)] - saved_[v]).norm();
     if (std::abs(delta[r]) > kMaxJump * ring / std::max(1, topo_.valence(v))) return reject();
     mesh_.positions[v] += delta[r] * geo_.vertexNormal[v];
+    largest = std::max(largest, std::abs(delta[r]));
   }
   invalidate();
   if (!acceptable(energyLimit)) return reject();
+  lastNormalStep_ = largest;
 
   // The drift is held to the same rules: a pass that folds a face or lifts the energy above what
   // the step allowed is undone (and the passes stop), so the step's checks cannot be undone by it.
   for (int pass = 0; pass < opt_.driftPasses && opt_.tangentialDrift; ++pass)
     if (!driftPass(energyLimit)) break;
+  // The last evaluation (of the accepted state) stays valid unless the boundary slides.
   slideBoundary();
-  invalidate();
   return true;
 }
 
@@ -306,9 +309,9 @@ bool FlowState::driftPass(double energyLimit) {
   driftSaved_ = mesh_.positions;
   faceNormalBefore_ = geo_.faceNormal;
   const int nv = topo_.vertexCount();
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i)
+  parallelFor(nv, [&](int i) {
     if (roles_.free[i]) mesh_.positions[i] += eps * drift_[i];
+  });
   invalidate();
   if (acceptable(energyLimit)) return true;
   mesh_.positions = driftSaved_;

@@ -21,12 +21,10 @@ constexpr double kCotClamp = 1e3;
 double meanEdgeLength(const Topology& topo, const std::vector<Vec3>& p) {
   const int ne = topo.edgeCount();
   if (ne == 0) return 0;
-  double sum = 0;
-#pragma omp parallel for reduction(+ : sum) schedule(static) if (ne > kParallelGrain)
-  for (int e = 0; e < ne; ++e) {
+  const double sum = parallelSum(ne, [&](int e) {
     const auto& ev = topo.edgeVertices(e);
-    sum += (p[ev[1]] - p[ev[0]]).norm();
-  }
+    return (p[ev[1]] - p[ev[0]]).norm();
+  });
   return sum / ne;
 }
 
@@ -77,13 +75,10 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   g.angleSum.resize(nv);
 
   // Edge lengths first: their mean sets the scale of every floor below.
-  double lengthSum = 0;
-#pragma omp parallel for reduction(+ : lengthSum) schedule(static) if (ne > kParallelGrain)
-  for (int e = 0; e < ne; ++e) {
+  const double lengthSum = parallelSum(ne, [&](int e) {
     const auto& ev = topo.edgeVertices(e);
-    g.edgeLength[e] = (p[ev[1]] - p[ev[0]]).norm();
-    lengthSum += g.edgeLength[e];
-  }
+    return g.edgeLength[e] = (p[ev[1]] - p[ev[0]]).norm();
+  });
   g.meanEdgeLength = ne > 0 ? lengthSum / ne : 0.0;
   if (!std::isfinite(g.meanEdgeLength)) throw NumericalError("computeGeometry: non-finite vertex position");
   const double ell = g.meanEdgeLength > 0 ? g.meanEdgeLength : 1.0;
@@ -91,10 +86,11 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   const double lengthFloor = kRelativeLengthFloor * ell;
 
   const auto& faces = topo.faces();
-  std::size_t zeroAreaFaces = 0;
-  double minArea = std::numeric_limits<double>::infinity();
-#pragma omp parallel for reduction(+ : zeroAreaFaces) reduction(min : minArea) schedule(static) if (nf > kParallelGrain)
-  for (int f = 0; f < nf; ++f) {
+  struct FaceTally {
+    std::size_t zeroArea = 0;
+    double minArea = std::numeric_limits<double>::infinity();
+  };
+  const FaceTally faceTally = parallelReduce(nf, FaceTally{}, [&](int f, FaceTally& tally) {
     const Face& t = faces[f];
     const Vec3 e[3] = {p[t[2]] - p[t[1]], p[t[0]] - p[t[2]], p[t[1]] - p[t[0]]};  // e[k] opposite corner k
     const Vec3 n = e[2].cross(-e[1]);
@@ -103,7 +99,7 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
     const bool degenerate = area <= areaFloor;
     g.faceArea[f] = area;
     g.faceNormal[f] = degenerate ? Vec3::Zero() : Vec3(n / twiceArea);
-    if (degenerate) ++zeroAreaFaces; else minArea = std::min(minArea, area);
+    if (degenerate) ++tally.zeroArea; else tally.minArea = std::min(tally.minArea, area);
 
     const double sqLen[3] = {e[0].squaredNorm(), e[1].squaredNorm(), e[2].squaredNorm()};
     const double inverse = degenerate ? 0.0 : 1.0 / std::max(twiceArea, areaFloor);
@@ -135,20 +131,22 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
       }
       g.cornerArea[c0 + k] = a;
     }
-  }
-  g.minFaceArea = std::isfinite(minArea) ? minArea : 0.0;
+  }, [](FaceTally& t, const FaceTally& p) {
+    t.zeroArea += p.zeroArea;
+    t.minArea = std::min(t.minArea, p.minArea);
+  });
+  g.minFaceArea = std::isfinite(faceTally.minArea) ? faceTally.minArea : 0.0;
 
-  std::size_t zeroLengthEdges = 0;
-#pragma omp parallel for reduction(+ : zeroLengthEdges) schedule(static) if (ne > kParallelGrain)
-  for (int e = 0; e < ne; ++e) {
-    if (g.edgeLength[e] <= lengthFloor) ++zeroLengthEdges;
+  const std::size_t zeroLengthEdges = parallelReduce(ne, std::size_t{0}, [&](int e, std::size_t& zero) {
+    if (g.edgeLength[e] <= lengthFloor) ++zero;
     const auto& oc = topo.edgeOppositeCorners(e);
     g.edgeWeight[e] = 0.5 * (g.cornerCot[oc[0]] + (oc[1] >= 0 ? g.cornerCot[oc[1]] : 0.0));
-  }
+  }, [](std::size_t& a, std::size_t b) { a += b; });
 
-  std::size_t zeroAreaVertices = 0, isolated = 0;
-#pragma omp parallel for reduction(+ : zeroAreaVertices, isolated) schedule(static) if (nv > kParallelGrain)
-  for (int v = 0; v < nv; ++v) {
+  struct VertexTally {
+    std::size_t zeroArea = 0, isolated = 0;
+  };
+  const VertexTally vertexTally = parallelReduce(nv, VertexTally{}, [&](int v, VertexTally& tally) {
     double area = 0, ring = 0;
     Vec3 normal = Vec3::Zero();
     for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) {
@@ -161,20 +159,23 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
     g.angleSum[v] = angleSumOf(topo, g, topo.cornerBegin(v), topo.cornerEnd(v));
     g.ringArea[v] = ring;
     if (topo.isIsolatedVertex(v)) {
-      ++isolated;
+      ++tally.isolated;
       area = 0;
     } else if (area <= areaFloor || len <= areaFloor) {
-      ++zeroAreaVertices;
+      ++tally.zeroArea;
       area = 0;
     }
     g.vertexArea[v] = area;
     g.vertexNormal[v] = area > 0 ? Vec3(normal / len) : Vec3::Zero();
-  }
+  }, [](VertexTally& t, const VertexTally& p) {
+    t.zeroArea += p.zeroArea;
+    t.isolated += p.isolated;
+  });
 
-  g.degenerate.zeroAreaFaces = zeroAreaFaces;
+  g.degenerate.zeroAreaFaces = faceTally.zeroArea;
   g.degenerate.zeroLengthEdges = zeroLengthEdges;
-  g.degenerate.zeroAreaVertices = zeroAreaVertices;
-  g.degenerate.isolatedVertices = isolated;
+  g.degenerate.zeroAreaVertices = vertexTally.zeroArea;
+  g.degenerate.isolatedVertices = vertexTally.isolated;
 }
 
 Geometry computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType) {

@@ -11,8 +11,7 @@ void gatherLaplacian(const Topology& topo, const Geometry& g, const std::vector<
                      Zero zero) {
   const int nv = topo.vertexCount();
   out.resize(nv);
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) {
+  parallelFor(nv, [&](int i) {
     T sum = zero();
     if (g.vertexArea[i] > 0) {
       for (int k = topo.ringBegin(i); k < topo.ringEnd(i); ++k)
@@ -20,7 +19,7 @@ void gatherLaplacian(const Topology& topo, const Geometry& g, const std::vector<
       sum /= g.vertexArea[i];
     }
     out[i] = sum;
-  }
+  });
 }
 
 }  // namespace

@@ -27,23 +27,17 @@ void tangentialDrift(const Topology& topo, const Geometry& g, const std::vector<
   w.resize(ne);
   u.resize(nv);
   t.resize(nv);
-#pragma omp parallel if (nv > kParallelGrain)
-  {
-#pragma omp for schedule(static)
-    for (int e = 0; e < ne; ++e) {
-      const auto& oc = topo.edgeOppositeCorners(e);
-      const double a = g.faceArea[oc[0] / 3] + (oc[1] >= 0 ? g.faceArea[oc[1] / 3] : 0.0);
-      w[e] = g.edgeLength[e] > lengthFloor ? a / g.edgeLength[e] : 0.0;
-    }
-#pragma omp for schedule(static)
-    for (int i = 0; i < nv; ++i) areaUmbrella(topo, g, w, moving, p, i, u[i]);  // U(P); zero where not moving
-#pragma omp for schedule(static)
-    for (int i = 0; i < nv; ++i) {
-      areaUmbrella(topo, g, w, moving, u, i, t[i]);  // U(U(P)) = U²
-      const Vec3& n = g.vertexNormal[i];
-      t[i] = -(t[i] - t[i].dot(n) * n);
-    }
-  }
+  parallelFor(ne, [&](int e) {
+    const auto& oc = topo.edgeOppositeCorners(e);
+    const double a = g.faceArea[oc[0] / 3] + (oc[1] >= 0 ? g.faceArea[oc[1] / 3] : 0.0);
+    w[e] = g.edgeLength[e] > lengthFloor ? a / g.edgeLength[e] : 0.0;
+  });
+  parallelFor(nv, [&](int i) { areaUmbrella(topo, g, w, moving, p, i, u[i]); });  // U(P); zero where not moving
+  parallelFor(nv, [&](int i) {
+    areaUmbrella(topo, g, w, moving, u, i, t[i]);  // U(U(P)) = U²
+    const Vec3& n = g.vertexNormal[i];
+    t[i] = -(t[i] - t[i].dot(n) * n);
+  });
 }
 
 void uniformBiUmbrella(const Topology& topo, const std::vector<Vec3>& p, const std::vector<std::uint8_t>& moving,
@@ -57,10 +51,8 @@ void uniformBiUmbrella(const Topology& topo, const std::vector<Vec3>& p, const s
   };
   u0.resize(nv);
   out.resize(nv);
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) u0[i] = topo.isBoundaryVertex(i) ? Vec3::Zero() : umbrella(p, i);
-#pragma omp parallel for schedule(static) if (nv > kParallelGrain)
-  for (int i = 0; i < nv; ++i) out[i] = moving[i] ? umbrella(u0, i) : Vec3::Zero();
+  parallelFor(nv, [&](int i) { u0[i] = topo.isBoundaryVertex(i) ? Vec3::Zero() : umbrella(p, i); });
+  parallelFor(nv, [&](int i) { out[i] = moving[i] ? umbrella(u0, i) : Vec3::Zero(); });
 }
 
 }  // namespace elastica

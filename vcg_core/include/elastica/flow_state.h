@@ -63,6 +63,8 @@ class FlowState {
   /// rises, a face flips, a vertex jumps, a value is non-finite) the positions are unchanged and it
   /// returns false.
   bool trySemiImplicitStep(double tau);
+  /// The largest normal displacement |δ_i| of the last accepted semi-implicit step.
+  double lastNormalStep() const { return lastNormalStep_; }
 
  private:
   double normalStep();
@@ -94,7 +96,7 @@ class FlowState {
 
   Geometry geo_;
   Curvature curv_;
-  double energy_ = 0, activeArea_ = 0, activeMinArea_ = 0;
+  double energy_ = 0, activeArea_ = 0, activeMinArea_ = 0, lastNormalStep_ = 0;
   std::vector<Vec3> lp_, u_, drift_;
   DriftScratch driftScratch_;
   std::vector<double> lh_, speed_, delta_;
