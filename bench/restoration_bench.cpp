@@ -6,6 +6,10 @@
 // Prints a Markdown table: for each method the wall time, the new vertices, the smallest angle in
 // the patch, and the sampled distances patch → removed truth and truth → patch (RMS and max, in
 // % of the bounding-box diagonal). With --write-dir, writes the holed mesh and each result as PLY.
+//
+// The time is the best of several runs of the method on a fresh copy of the holed mesh (as many
+// as fit in kTimingBudget seconds, at most kMaxRuns; at least one): single runs of a few
+// milliseconds on a shared machine vary by 2–3×, and the comparison with CGAL is a ratio.
 #include "surface_distance.h"
 #ifdef ELASTICA_HAVE_CGAL
 #include "cgal_fill.h"
@@ -27,6 +31,9 @@
 using namespace elastica;
 
 namespace {
+
+constexpr double kTimingBudget = 1.0;
+constexpr int kMaxRuns = 30;
 
 struct Method {
   std::string name;
@@ -98,18 +105,25 @@ int main(int argc, char** argv) {
 #endif
   };
 
-  std::printf("| method | seconds | new vertices | smallest angle | patch→truth RMS / max | truth→patch RMS / max |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|\n");
+  std::printf("| method | ms (best of runs) | runs | new vertices | smallest angle | patch→truth RMS / max | truth→patch RMS / max |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
   for (const Method& method : methods) {
-    TriMesh m = holed;
-    const auto start = std::chrono::steady_clock::now();
-    method.run(m);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    TriMesh m;
+    double best = 0, spent = 0;
+    int runs = 0;
+    while (runs == 0 || (runs < kMaxRuns && spent + best < kTimingBudget)) {
+      m = holed;
+      const auto start = std::chrono::steady_clock::now();
+      method.run(m);
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      best = runs++ == 0 ? seconds : std::min(best, seconds);
+      spent += seconds;
+    }
     std::vector<std::uint8_t> isNew(m.faces.size(), 0);
     for (int f = holed.faceCount(); f < m.faceCount(); ++f) isNew[f] = 1;
     const TriMesh patch = bench::facesOf(m, isNew);
     const auto there = bench::sampledDistance(patch, truth), back = bench::sampledDistance(truth, patch);
-    std::printf("| %s | %.3f | %d | %.1f° | %.3f %% / %.3f %% | %.3f %% / %.3f %% |\n", method.name.c_str(), seconds,
+    std::printf("| %s | %.2f | %d | %d | %.1f° | %.3f %% / %.3f %% | %.3f %% / %.3f %% |\n", method.name.c_str(), 1e3 * best, runs,
                 m.vertexCount() - holed.vertexCount(), smallestAngleDegrees(m, holed.faceCount()), 100 * there.rms / diagonal,
                 100 * there.max / diagonal, 100 * back.rms / diagonal, 100 * back.max / diagonal);
     std::fflush(stdout);

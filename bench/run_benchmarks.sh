@@ -121,7 +121,7 @@ EOF
 ## 4. Bunny-flank restoration vs CGAL
 
 \`restoration_bench\` (see docs/restoration.md): the same 37-edge hole filled by each method; wall
-time of the whole fill and sampled distances to the removed surface in % of the bounding-box
+time of the whole fill (best of repeated runs) and sampled distances to the removed surface in % of the bounding-box
 diagonal.
 
 EOF

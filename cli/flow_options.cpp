@@ -27,6 +27,10 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
                  "stop when the relative energy change per unit of normalised time t/A^2 is below this")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
+  cmd.add_option("--shape-tol", opt.shapeTolerance,
+                 "semi-implicit: also stop once a step at the scale of the moving region moves no vertex along its "
+                 "normal by more than this times the mean edge length (fill's default 1e-3; fair's 0: off)")
+      ->check(CLI::NonNegativeNumber);
   cmd.add_flag("--remesh", opt.flipEdges,
                "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check (always on in fill)");
   cmd.add_flag("--no-tangential{false}", opt.tangentialDrift, "disable the tangential drift that keeps triangles even");

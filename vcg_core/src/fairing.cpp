@@ -26,13 +26,18 @@ constexpr double kInitialTau = 0.05, kGrow = 1.5, kShrink = 0.5, kSmallestTau = 
 // triggered at 100× the final tolerance (near steady state is enough before refining).
 constexpr int kPlateauWindow = 10;
 constexpr double kSubdivisionPlateauFactor = 100;
+// A step τ ≥ A²/kShapeScaleFactor relaxes the slowest bending mode of a region of area A within
+// the step (τ/2 · λ ≥ 1): the first eigenvalue of Δ² on a clamped disk of area A is ≈ 1030/A²,
+// so 50 leaves a 10× margin for other shapes. See FlowOptions::shapeTolerance.
+constexpr double kShapeScaleFactor = 50;
 
 void validate(const FlowOptions& o) {
   auto bad = [](const std::string& what) { throw InvalidInputError("fair: " + what); };
   if (!(o.stepFactor > 0)) bad("stepFactor must be > 0");
   if (!(o.driftFactor >= 0)) bad("driftFactor must be >= 0");
   if (!(o.bilaplacianStep > 0 && o.bilaplacianStep < 0.5)) bad("bilaplacianStep must be in (0, 0.5)");
-  if (!(o.energyTolerance >= 0) || !(o.subdivisionTolerance >= 0) || !(o.plateauTolerance >= 0))
+  if (!(o.energyTolerance >= 0) || !(o.subdivisionTolerance >= 0) || !(o.plateauTolerance >= 0) ||
+      !(o.shapeTolerance >= 0))
     bad("tolerances must be >= 0");
   if (o.subdivisionLevels < 0 || o.subdivisionLevels > 8) bad("subdivisionLevels must be in [0, 8]");
   if (!(o.targetEdgeLength >= 0)) bad("targetEdgeLength must be >= 0");
@@ -136,9 +141,18 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
   }
 }
 
+// FlowOptions::shapeTolerance: the accepted step `tau` reached the scale of the moving region and
+// moved no vertex along its normal by more than the tolerance (relative to the mean edge length).
+bool shapeSettled(FlowState& state, double tau, double tolerance) {
+  if (!(tolerance > 0)) return false;
+  const double area = state.activeArea();
+  return tau >= area * area / kShapeScaleFactor &&
+         state.lastNormalStep() <= tolerance * state.geometry().meanEdgeLength;
+}
+
 // The semi-implicit scheme with adaptive τ until the energy plateau (no accepted step in the last
-// kPlateauWindow lowered E below what it was before them by more than `tolerance`, relative), no
-// step lowers E any more, or a limit.
+// kPlateauWindow lowered E below what it was before them by more than `tolerance`, relative), the
+// shape settled (FlowOptions::shapeTolerance), no step lowers E any more, or a limit.
 void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance) {
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;
@@ -164,6 +178,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
     tau *= kGrow;
     const double energy = state.energy();
     if (run.record(state, stage.level, energy)) return;
+    if (shapeSettled(state, tau / kGrow, run.opt.shapeTolerance)) return;
     window.push_back(energy);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
     const double before = window.front();

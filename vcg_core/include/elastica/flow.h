@@ -101,6 +101,15 @@ struct FlowOptions {
 
   /// Semi-implicit: stop when E changed by less than this (relative) over the last 10 accepted steps.
   double plateauTolerance = 1e-6;
+  /// Semi-implicit: also stop once the shape has settled, when an accepted step is implicit at the
+  /// scale of the whole moving region (τ ≥ A²/50, A its area: even its slowest bending mode
+  /// relaxes within the step, so δ approximates the remaining distance to the fixed point) and
+  /// moved no vertex along its normal by more than this times the mean edge length. 0 turns it
+  /// off (`fair`'s default). After that point the energy still falls slowly, for hundreds of
+  /// steps, while the tangential drift evens out the vertices and the surface follows by less
+  /// than 10⁻⁴ ℓ per step (bunny flank: 21 steps instead of 273, the same distances to the
+  /// removed surface within 0.04 % of the diagonal); a hole fill (default 10⁻³) does not wait.
+  double shapeTolerance = 0;
   /// Semi-implicit: tangential drift passes (ε = driftFactor · A_min each) after an accepted step.
   int driftPasses = 2;
 
