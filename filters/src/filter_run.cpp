@@ -39,8 +39,9 @@ Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices) {
     throw InvalidInputError("faces are not consistently oriented (" + std::to_string(topo.inconsistentEdgeCount()) +
                             " edges traversed the same way by both faces); re-orient them first: "
                             "Filters > Normals > Re-Orient all faces coherently");
-  if (rejectNonManifoldVertices && topo.nonManifoldVertexCount() > 0)
-    throw InvalidInputError(std::to_string(topo.nonManifoldVertexCount()) +
+  const int nonManifold = rejectNonManifoldVertices ? topo.nonManifoldVertexCount() : 0;  // counted per call
+  if (nonManifold > 0)
+    throw InvalidInputError(std::to_string(nonManifold) +
                             " non-manifold vertices (several fans of faces meet there); split them first: "
                             "Filters > Cleaning and Repairing > Repair non Manifold Vertices by splitting");
   return topo;
@@ -180,8 +181,8 @@ CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v) {
   const Topology topo = checkedTopology(mesh, /*rejectNonManifoldVertices=*/false);
 
   CurvatureResult r;
-  if (topo.nonManifoldVertexCount() > 0)
-    r.log.push_back("warning: " + std::to_string(topo.nonManifoldVertexCount()) +
+  if (const int nonManifold = topo.nonManifoldVertexCount(); nonManifold > 0)  // counted per call
+    r.log.push_back("warning: " + std::to_string(nonManifold) +
                     " non-manifold vertices; curvature there is not meaningful");
   const Geometry geo = computeGeometry(topo, mesh.positions, area);
   CurvatureOptions opt;

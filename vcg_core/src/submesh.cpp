@@ -5,7 +5,12 @@
 namespace elastica {
 
 VertexFaces vertexFaces(const TriMesh& mesh) {
+  // Sized first: growing each list by push_back cost about four allocations per vertex.
+  std::vector<int> count(mesh.positions.size(), 0);
+  for (const Face& t : mesh.faces)
+    for (int v : t) ++count[v];
   VertexFaces vf(mesh.positions.size());
+  for (std::size_t v = 0; v < vf.size(); ++v) vf[v].reserve(count[v]);
   for (int f = 0; f < mesh.faceCount(); ++f) {
     for (int v : mesh.faces[f]) vf[v].push_back(f);
   }

@@ -8,21 +8,27 @@
 namespace elastica {
 namespace {
 
-struct HalfEdge {
-  int lo, hi;    // endpoints, lo < hi
-  int corner;    // the corner opposite this edge in its face
-  bool forward;  // the face traverses the edge lo → hi
+// A half-edge seen from its smaller endpoint.
+struct Spoke {
+  int hi;      // the larger endpoint
+  int corner;  // the corner opposite the edge in its face
 };
 
-// Counting sort of (key, value) pairs into CSR arrays.
-void buildCsr(int n, const std::vector<std::pair<int, int>>& pairs, std::vector<int>& offset,
-              std::vector<int>& value) {
-  offset.assign(n + 1, 0);
-  for (const auto& p : pairs) ++offset[p.first + 1];
-  std::partial_sum(offset.begin(), offset.end(), offset.begin());
-  value.resize(pairs.size());
-  std::vector<int> cursor(offset.begin(), offset.end() - 1);
-  for (const auto& p : pairs) value[cursor[p.first]++] = p.second;
+// Stable insertion sort by the larger endpoint. A vertex has about six spokes, where this beats
+// any general-purpose sort; past the limit (a vertex of very high valence) it would be quadratic.
+constexpr std::size_t kInsertionSortLimit = 32;
+
+void sortSpokes(std::vector<Spoke>& spokes) {
+  if (spokes.size() > kInsertionSortLimit) {
+    std::stable_sort(spokes.begin(), spokes.end(), [](const Spoke& x, const Spoke& y) { return x.hi < y.hi; });
+    return;
+  }
+  for (std::size_t i = 1; i < spokes.size(); ++i) {
+    const Spoke s = spokes[i];
+    std::size_t j = i;
+    for (; j > 0 && spokes[j - 1].hi > s.hi; --j) spokes[j] = spokes[j - 1];
+    spokes[j] = s;
+  }
 }
 
 int findRoot(std::vector<int>& parent, int i) {
@@ -32,6 +38,11 @@ int findRoot(std::vector<int>& parent, int i) {
 
 }  // namespace
 
+// Linear in the mesh size apart from sorting each vertex's handful of spokes: the corner lists
+// are a counting sort, the edges come vertex by vertex from them, and the one-rings are a counting
+// sort of the edges. It runs at every connectivity change (each edge-flip pass, each hole patch,
+// remeshing), so it also avoids temporaries as large as the mesh: on a virtual machine their page
+// faults cost more than the work.
 Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertexCount), faces_(faces) {
   if (vertexCount < 0) throw InvalidInputError("Topology: negative vertex count");
   const int nf = static_cast<int>(faces.size());
@@ -48,88 +59,104 @@ Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertex
                               std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]));
     }
   }
+  const int nc = 3 * nf;
 
-  // Undirected edges from sorted half-edges.
-  std::vector<HalfEdge> half;
-  half.reserve(3 * faces.size());
-  for (int f = 0; f < nf; ++f) {
-    for (int k = 0; k < 3; ++k) {
-      const int a = faces[f][(k + 1) % 3], b = faces[f][(k + 2) % 3];
-      half.push_back({std::min(a, b), std::max(a, b), 3 * f + k, a < b});
-    }
-  }
-  std::sort(half.begin(), half.end(), [](const HalfEdge& x, const HalfEdge& y) {
-    return x.lo != y.lo ? x.lo < y.lo : (x.hi != y.hi ? x.hi < y.hi : x.corner < y.corner);
-  });
-  for (size_t i = 0; i < half.size();) {
-    size_t j = i + 1;
-    while (j < half.size() && half[j].lo == half[i].lo && half[j].hi == half[i].hi) ++j;
-    if (j - i > 2) {
-      throw InvalidInputError("Topology: non-manifold edge between vertices " + std::to_string(half[i].lo) +
-                              " and " + std::to_string(half[i].hi) + " (shared by " +
-                              std::to_string(j - i) + " faces)");
-    }
-    edgeVertices_.push_back({half[i].lo, half[i].hi});
-    if (j - i == 2) {
-      edgeCorners_.push_back({half[i].corner, half[i + 1].corner});
-      if (half[i].forward == half[i + 1].forward) ++inconsistentEdges_;
-    } else {
-      edgeCorners_.push_back({half[i].corner, -1});
-      ++boundaryEdges_;
-    }
-    i = j;
-  }
+  // Corners of each vertex in increasing corner number (a stable counting sort).
+  cornerOffset_.assign(nv_ + 1, 0);
+  for (const Face& t : faces)
+    for (int v : t) ++cornerOffset_[v + 1];
+  std::partial_sum(cornerOffset_.begin(), cornerOffset_.end(), cornerOffset_.begin());
+  vertexCorner_.resize(nc);
+  std::vector<int> cursor(cornerOffset_.begin(), cornerOffset_.end() - 1);
+  for (int c = 0; c < nc; ++c) vertexCorner_[cursor[faces[c / 3][c % 3]]++] = c;
 
-  // One-rings and corner lists.
-  std::vector<std::pair<int, int>> pairs;
-  pairs.reserve(2 * edgeVertices_.size());
-  for (int e = 0; e < edgeCount(); ++e) {
-    pairs.emplace_back(edgeVertices_[e][0], e);
-    pairs.emplace_back(edgeVertices_[e][1], e);
-  }
-  buildCsr(nv_, pairs, ringOffset_, ringEdge_);
-  ringVertex_.resize(ringEdge_.size());
-  for (int v = 0; v < nv_; ++v) {
-    for (int k = ringOffset_[v]; k < ringOffset_[v + 1]; ++k) {
-      const auto& ev = edgeVertices_[ringEdge_[k]];
-      ringVertex_[k] = ev[0] == v ? ev[1] : ev[0];
-    }
-  }
-  pairs.clear();
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) pairs.emplace_back(faces[f][k], 3 * f + k);
-  buildCsr(nv_, pairs, cornerOffset_, vertexCorner_);
-
+  // Undirected edges numbered in (lo, hi) order: for each vertex lo, its spokes to larger
+  // neighbours grouped by neighbour. The spokes come in face order and sort stably, so the two
+  // corners of an edge are in increasing order. ringOffset_ counts each vertex's edges first.
+  // A closed mesh has exactly nc/2 edges; the reserve leaves room for a boundary.
+  edgeVertices_.reserve(nc / 2 + nc / 32 + 3);
+  edgeCorners_.reserve(nc / 2 + nc / 32 + 3);
+  ringOffset_.assign(nv_ + 1, 0);
   boundaryVertex_.assign(nv_, 0);
-  for (int e = 0; e < edgeCount(); ++e) {
-    if (isBoundaryEdge(e)) boundaryVertex_[edgeVertices_[e][0]] = boundaryVertex_[edgeVertices_[e][1]] = 1;
+  std::vector<Spoke> spokes;
+  for (int lo = 0; lo < nv_; ++lo) {
+    spokes.clear();
+    for (int i = cornerBegin(lo); i < cornerEnd(lo); ++i) {
+      const int c = vertexCorner_[i], f = c / 3, k = c % 3;
+      // The edge to the next vertex of the face is opposite the previous corner, and vice versa.
+      const int next = faces[f][(k + 1) % 3], prev = faces[f][(k + 2) % 3];
+      if (next > lo) spokes.push_back({next, 3 * f + (k + 2) % 3});
+      if (prev > lo) spokes.push_back({prev, 3 * f + (k + 1) % 3});
+    }
+    sortSpokes(spokes);
+    for (std::size_t i = 0; i < spokes.size();) {
+      const int hi = spokes[i].hi;
+      std::size_t j = i + 1;
+      while (j < spokes.size() && spokes[j].hi == hi) ++j;
+      if (j - i > 2) {
+        throw InvalidInputError("Topology: non-manifold edge between vertices " + std::to_string(lo) + " and " +
+                                std::to_string(hi) + " (shared by " + std::to_string(j - i) + " faces)");
+      }
+      edgeVertices_.push_back({lo, hi});
+      if (j - i == 2) {
+        const int c0 = spokes[i].corner, c1 = spokes[i + 1].corner;
+        edgeCorners_.push_back({c0, c1});
+        // Each face traverses the edge from the vertex after the opposite corner.
+        const bool forward0 = faces[c0 / 3][(c0 % 3 + 1) % 3] == lo, forward1 = faces[c1 / 3][(c1 % 3 + 1) % 3] == lo;
+        if (forward0 == forward1) ++inconsistentEdges_;
+      } else {
+        edgeCorners_.push_back({spokes[i].corner, -1});
+        ++boundaryEdges_;
+        boundaryVertex_[lo] = boundaryVertex_[hi] = 1;
+      }
+      ++ringOffset_[lo + 1];
+      ++ringOffset_[hi + 1];
+      i = j;
+    }
   }
 
-  // Fans around each vertex: faces sharing an edge at the vertex are joined; more than one
-  // component means a bow-tie (non-manifold) vertex.
-  std::vector<std::pair<int, int>> spokes;  // (neighbour, local face index)
+  // One-rings: each vertex's edges in increasing edge number (a stable counting sort). That
+  // puts the neighbours in increasing order: first those below v (edges numbered by them), then
+  // those above.
+  std::partial_sum(ringOffset_.begin(), ringOffset_.end(), ringOffset_.begin());
+  ringEdge_.resize(ringOffset_[nv_]);
+  ringVertex_.resize(ringOffset_[nv_]);
+  cursor.assign(ringOffset_.begin(), ringOffset_.end() - 1);
+  for (int e = 0; e < edgeCount(); ++e) {
+    const int a = edgeVertices_[e][0], b = edgeVertices_[e][1];
+    ringEdge_[cursor[a]] = e;
+    ringVertex_[cursor[a]++] = b;
+    ringEdge_[cursor[b]] = e;
+    ringVertex_[cursor[b]++] = a;
+  }
+}
+
+int Topology::nonManifoldVertexCount() const {
+  // Fans around each vertex: faces sharing an edge at the vertex are joined; more than one fan
+  // means a bow-tie (non-manifold) vertex. Seen from the edges, each face joins its two edges at
+  // the vertex, so the fans are the components of the ring under those joins. The ring is sorted
+  // by neighbour, so a binary search finds an edge's place in it.
+  int count = 0;
   std::vector<int> parent;
   for (int v = 0; v < nv_; ++v) {
-    const int n = cornerEnd(v) - cornerBegin(v);
-    if (n < 2) continue;
-    spokes.clear();
+    if (cornerEnd(v) - cornerBegin(v) < 2) continue;
+    const int* ring = ringVertex_.data() + ringBegin(v);
+    const int n = valence(v);
+    auto place = [&](int x) { return static_cast<int>(std::lower_bound(ring, ring + n, x) - ring); };
     parent.resize(n);
     std::iota(parent.begin(), parent.end(), 0);
-    for (int i = 0; i < n; ++i) {
-      const int c = vertexCorner_[cornerBegin(v) + i];
-      const Face& t = faces[c / 3];
-      spokes.emplace_back(t[(c % 3 + 1) % 3], i);
-      spokes.emplace_back(t[(c % 3 + 2) % 3], i);
+    int fans = n;
+    for (int i = cornerBegin(v); i < cornerEnd(v); ++i) {
+      const int c = vertexCorner_[i], f = c / 3, k = c % 3;
+      const int a = findRoot(parent, place(faces_[f][(k + 1) % 3])), b = findRoot(parent, place(faces_[f][(k + 2) % 3]));
+      if (a != b) {
+        parent[a] = b;
+        --fans;
+      }
     }
-    std::sort(spokes.begin(), spokes.end());
-    for (size_t i = 1; i < spokes.size(); ++i) {
-      if (spokes[i].first == spokes[i - 1].first)
-        parent[findRoot(parent, spokes[i].second)] = findRoot(parent, spokes[i - 1].second);
-    }
-    int components = 0;
-    for (int i = 0; i < n; ++i) components += findRoot(parent, i) == i;
-    if (components > 1) ++nonManifoldVertices_;
+    if (fans > 1) ++count;
   }
+  return count;
 }
 
 std::size_t Topology::byteSize() const {

@@ -52,7 +52,9 @@ class Topology {
   /// Interior edges whose two faces traverse them in the same direction (inconsistent orientation).
   int inconsistentEdgeCount() const { return inconsistentEdges_; }
   /// Vertices whose incident faces form more than one fan (non-manifold "bow-tie" vertices).
-  int nonManifoldVertexCount() const { return nonManifoldVertices_; }
+  /// Counted on each call, in linear time: only input checks ask, and the flows, which rebuild the
+  /// topology at every connectivity change, would otherwise pay for it at each build.
+  int nonManifoldVertexCount() const;
   /// Bytes of the adjacency arrays (faces, edges, rings, corners, boundary flags).
   std::size_t byteSize() const;
 
@@ -69,7 +71,6 @@ class Topology {
   std::vector<std::uint8_t> boundaryVertex_;
   int boundaryEdges_ = 0;
   int inconsistentEdges_ = 0;
-  int nonManifoldVertices_ = 0;
 };
 
 }  // namespace elastica
