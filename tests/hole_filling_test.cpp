@@ -122,6 +122,29 @@ TEST(HoleFilling, RestoresASphereCap) {
   EXPECT_NEAR(h.minAngleDegrees, smallestAngleDegrees(mesh, before.faceCount()), 1e-9);
 }
 
+// Holes deeper than a hemisphere: the bi-Laplace patch is stretched unevenly and the flow inflates
+// it further; the patch is remeshed before the flow and again after it (smallest angle 1° on both
+// caps without; measured 30.7° and 29.0° with).
+TEST(HoleFilling, DeepCapsRestoreWithoutSlivers) {
+  for (double degrees : {110.0, 120.0}) {
+    TriMesh mesh = sphereWithCapHole(degrees);
+    const TriMesh before = mesh;
+    const HoleFillReport r = fillHoles(mesh, nullptr, {});
+    ASSERT_EQ(r.holes.size(), 1u);
+    EXPECT_TRUE(r.holes[0].reason.empty()) << degrees << ": " << r.holes[0].reason;
+    for (int i = 0; i < before.vertexCount(); ++i) ASSERT_EQ(mesh.positions[i], before.positions[i]) << degrees << ": " << i;
+    for (int f = 0; f < before.faceCount(); ++f) ASSERT_EQ(mesh.faces[f], before.faces[f]) << degrees << ": " << f;
+    double worst = 0;
+    for (int i = before.vertexCount(); i < mesh.vertexCount(); ++i) worst = std::max(worst, std::abs(mesh.positions[i].norm() - 1));
+    EXPECT_LT(worst, 0.01) << degrees;
+    EXPECT_GE(smallestAngleDegrees(mesh, before.faceCount()), 20) << degrees;
+    EXPECT_EQ(selfIntersections(mesh), 0) << degrees;
+    const Topology topo(mesh.vertexCount(), mesh.faces);
+    EXPECT_EQ(topo.boundaryEdgeCount(), 0) << degrees;
+    EXPECT_EQ(topo.eulerCharacteristic(), 2) << degrees;
+  }
+}
+
 // A hole in the side of a cylinder (radius 1). Cylinders are not Willmore surfaces (F = 1/(4r³)
 // outward), so the elastica patch bulges out a little; the bi-Laplace patch (CGAL's fairing) sags
 // inward. Returns the largest outward and inward radial deviations of the new vertices.

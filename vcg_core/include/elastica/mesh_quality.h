@@ -3,9 +3,15 @@
 
 #include <elastica/types.h>
 
+#include <cstdint>
+#include <vector>
+
 namespace elastica {
 
 /// Smallest corner angle, in degrees, over the faces [firstFace, end) of `mesh` (180 if none).
 double smallestAngleDegrees(const TriMesh& mesh, int firstFace = 0);
+
+/// Smallest corner angle, in degrees, over the faces flagged in `faceFlags` (180 if none).
+double smallestAngleDegrees(const TriMesh& mesh, const std::vector<std::uint8_t>& faceFlags);
 
 }  // namespace elastica

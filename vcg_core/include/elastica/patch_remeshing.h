@@ -1,0 +1,45 @@
+// Isotropic remeshing of a hole's patch (Botsch & Kobbelt, "A Remeshing Approach to
+// Multiresolution Modeling", SGP 2004), restricted to the patch's faces: split long edges,
+// collapse short ones, flip toward valence 6, relax tangentially. A deep hole's bi-Laplace patch
+// is stretched unevenly (its vertices come from refining the flat fill); the flow moves vertices
+// along their normals only, so the slivers it starts from are the slivers it ends with.
+#pragma once
+
+#include <elastica/types.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace elastica {
+
+struct PatchRemeshingOptions {
+  /// Split–collapse–flip–relax rounds (Botsch & Kobbelt use 5–10). On 2,562-vertex spheres with
+  /// polar caps of 40–120° cut away, 10 rounds of 10 passes left every restored patch's smallest
+  /// angle at 22.6° or more (remeshing always kept); 5 rounds or 3 passes left single slivers (0.05–18°) on some caps.
+  int iterations = 10;
+  /// Tangential relaxation passes per round (Jacobi, each a full step to the neighbours' mean).
+  int relaxPasses = 10;
+};
+
+/// Remeshes the faces flagged in `patchFace` (one byte per face) toward the edge length `sigma`
+/// (one per vertex; an edge's target is the mean of its ends'). Edges longer than 4/3 of their
+/// target are split at their midpoint; edges shorter than 4/5 are collapsed (two new vertices meet
+/// at the midpoint; a new vertex that close to an original one is joined to another of its new
+/// neighbours instead); edges are flipped where that brings the valences of their four vertices
+/// closer to 6; new vertices move toward the mean of their neighbours within their tangent plane.
+///
+/// What stays: vertices before `firstNew` never move and are never removed; edges with a face
+/// outside the patch (the patch's border) are never split, collapsed or flipped; faces not flagged
+/// keep their index and value. Collapses only join two new vertices, and only when the result is
+/// still a manifold disk (link condition), no face turns over and no edge grows beyond 4/3 of its
+/// target; relaxation steps that would turn a face over are halved or dropped.
+/// What changes: new vertices (from `firstNew` on) are added, moved or removed, those that remain
+/// renumbered in their order; the patch's faces are rewritten. Removed faces' slots are refilled
+/// from the end of the face list, new faces appended flagged, so every slot before the last face
+/// outside the patch still holds a patch face (a disk patch never has fewer faces than its border
+/// has edges − 2, so a hole's triangulation slots stay filled too). `sigma` follows the vertices.
+/// Lengths and tolerances are relative to `sigma`: scale-covariant.
+void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+                 const PatchRemeshingOptions& opt = {});
+
+}  // namespace elastica

@@ -1,0 +1,292 @@
+#include <elastica/patch_remeshing.h>
+
+#include <algorithm>
+#include <iterator>
+#include <utility>
+
+namespace elastica {
+namespace {
+
+constexpr double kSplitFactor = 4.0 / 3;     // Botsch & Kobbelt's thresholds: they make a split's
+constexpr double kCollapseFactor = 4.0 / 5;  // halves and a collapse's result land between them
+constexpr int kMaxSplitPasses = 16;          // each pass halves the longest edges; bounds a runaway
+constexpr int kTargetValence = 6;
+// A collapse or flip must keep every affected face turned the way it was, with margin: the new
+// normal may turn by at most ~60° (cos 60° = 0.5) from the old one.
+constexpr double kMinNormalCosine = 0.5;
+
+Vec3 faceNormal(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+
+// The patch with per-vertex face lists, edited in place. Dead faces and vertices are marked and
+// dropped by compact().
+class PatchEditor {
+ public:
+  PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew)
+      : m_(mesh), patch_(patchFace), sigma_(sigma), firstNew_(firstNew), faceAlive_(mesh.faces.size(), 1),
+        vertexFaces_(mesh.positions.size()) {
+    sigma_.resize(m_.positions.size(), 0);
+    int patchSoFar = 0;
+    for (int f = 0; f < m_.faceCount(); ++f) {
+      for (int v : m_.faces[f]) vertexFaces_[v].push_back(f);
+      if (patch_[f]) ++patchSoFar;
+      else minPatchFaces_ = patchSoFar;
+    }
+    livePatchFaces_ = patchSoFar;
+  }
+
+  // The edges of the live patch faces, each once as (smaller, larger).
+  std::vector<std::pair<int, int>> patchEdges() const {
+    std::vector<std::pair<int, int>> edges;
+    for (int f = 0; f < m_.faceCount(); ++f) {
+      if (!faceAlive_[f] || !patch_[f]) continue;
+      const Face& t = m_.faces[f];
+      for (int k = 0; k < 3; ++k) edges.emplace_back(std::minmax(t[k], t[(k + 1) % 3]));
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+  }
+
+  double length(int a, int b) const { return (m_.positions[a] - m_.positions[b]).norm(); }
+  double target(int a, int b) const { return 0.5 * (sigma_[a] + sigma_[b]); }
+
+  // The faces on edge (a, b): f0 = (a, b, c) and f1 = (b, a, d) in cyclic order. False unless the
+  // edge exists with two faces, both in the patch (the patch's border is never edited).
+  bool interiorEdge(int a, int b, int& f0, int& f1, int& c, int& d) const {
+    f0 = f1 = -1;
+    for (int f : vertexFaces_[a]) {
+      const Face& t = m_.faces[f];
+      for (int k = 0; k < 3; ++k) {
+        if (t[k] != a) continue;
+        if (t[(k + 1) % 3] == b) f0 = f, c = t[(k + 2) % 3];
+        if (t[(k + 2) % 3] == b) f1 = f, d = t[(k + 1) % 3];
+      }
+    }
+    return f0 >= 0 && f1 >= 0 && patch_[f0] && patch_[f1];
+  }
+
+  bool split(int a, int b) {
+    int f0, f1, c = -1, d = -1;
+    if (!interiorEdge(a, b, f0, f1, c, d)) return false;
+    const int x = m_.vertexCount();
+    m_.positions.push_back(0.5 * (m_.positions[a] + m_.positions[b]));
+    sigma_.push_back(target(a, b));
+    vertexFaces_.emplace_back();
+    addFace({x, b, c});
+    addFace({x, a, d});
+    setFace(f0, {a, x, c});
+    setFace(f1, {b, x, d});
+    return true;
+  }
+
+  // Removes new vertex a by joining it to new vertex b, which moves to p, if that keeps the patch
+  // a manifold disk with no face turned over and no edge longer than kSplitFactor · target.
+  bool collapse(int a, int b, const Vec3& p) {
+    if (a < firstNew_ || b < firstNew_ || livePatchFaces_ - 2 < minPatchFaces_) return false;
+    int f0, f1, c = -1, d = -1;
+    if (!interiorEdge(a, b, f0, f1, c, d)) return false;
+    // Link condition: a and b share exactly the neighbours c and d; c and d keep three faces.
+    std::vector<int> na = neighbours(a), nb = neighbours(b), common;
+    std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
+    if (common.size() != 2 || vertexFaces_[c].size() <= 3 || vertexFaces_[d].size() <= 3) return false;
+    const double s = target(a, b);
+    for (int v : {a, b}) {
+      for (int f : vertexFaces_[v]) {
+        if (f == f0 || f == f1) continue;
+        Face t = m_.faces[f];
+        const Vec3 before = faceNormal(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]);
+        Vec3 q[3];
+        for (int k = 0; k < 3; ++k) {
+          q[k] = t[k] == v ? p : m_.positions[t[k]];
+          if (t[k] != v && (p - q[k]).norm() > kSplitFactor * 0.5 * (s + sigma_[t[k]])) return false;
+        }
+        const Vec3 after = faceNormal(q[0], q[1], q[2]);
+        if (after.dot(before) <= kMinNormalCosine * after.norm() * before.norm()) return false;
+      }
+    }
+    killFace(f0);
+    killFace(f1);
+    for (int f : vertexFaces_[a]) {
+      for (int& v : m_.faces[f]) v = v == a ? b : v;
+      vertexFaces_[b].push_back(f);
+    }
+    vertexFaces_[a].clear();
+    m_.positions[b] = p;
+    sigma_[b] = s;
+    return true;
+  }
+
+  // A short edge: two new vertices meet at its midpoint; a new vertex too close to an original one
+  // (which stays) is joined, at its place, to one of its other new neighbours instead.
+  bool collapseShort(int a, int b) {
+    if (a >= firstNew_ && b >= firstNew_) return collapse(a, b, 0.5 * (m_.positions[a] + m_.positions[b]));
+    const int v = a >= firstNew_ ? a : b;
+    if (v < firstNew_) return false;
+    for (int w : neighbours(v))
+      if (w >= firstNew_ && collapse(v, w, m_.positions[w])) return true;
+    return false;
+  }
+
+  // Flips (a, b) to (c, d) where that lowers Σ (valence − 6)² over the four vertices.
+  bool flipForValence(int a, int b) {
+    int f0, f1, c = -1, d = -1;
+    if (!interiorEdge(a, b, f0, f1, c, d) || c == d || hasEdge(c, d)) return false;
+    const int va = valence(a), vb = valence(b), vc = valence(c), vd = valence(d);
+    if (va <= 3 || vb <= 3) return false;
+    auto dev = [](int v) { return (v - kTargetValence) * (v - kTargetValence); };
+    if (dev(va - 1) + dev(vb - 1) + dev(vc + 1) + dev(vd + 1) >= dev(va) + dev(vb) + dev(vc) + dev(vd)) return false;
+    const auto& P = m_.positions;
+    const Vec3 n0 = faceNormal(P[a], P[b], P[c]), n1 = faceNormal(P[b], P[a], P[d]);
+    const Vec3 old = n0.normalized() + n1.normalized();
+    for (const Vec3& n : {faceNormal(P[c], P[a], P[d]), faceNormal(P[d], P[b], P[c])})
+      if (n.dot(old) <= kMinNormalCosine * n.norm() * old.norm()) return false;
+    setFace(f0, {c, a, d});
+    setFace(f1, {d, b, c});
+    return true;
+  }
+
+  // Moves each new vertex toward the mean of its neighbours, within the tangent plane of its
+  // area-weighted normal (so the patch keeps its shape to first order). One Jacobi pass; a move
+  // that would turn one of the vertex's faces over (against the neighbours' current positions)
+  // is halved until it does not, or dropped.
+  void relax() {
+    std::vector<Vec3> next = m_.positions;
+    for (int v = firstNew_; v < m_.vertexCount(); ++v) {
+      if (vertexFaces_[v].empty()) continue;
+      Vec3 n = Vec3::Zero();
+      for (int f : vertexFaces_[v]) n += normalOf(f, v, m_.positions[v]);
+      const std::vector<int> ring = neighbours(v);
+      Vec3 c = Vec3::Zero();
+      for (int u : ring) c += m_.positions[u];
+      Vec3 delta = c / static_cast<double>(ring.size()) - m_.positions[v];
+      const double nn = n.squaredNorm();
+      if (nn > 0) delta -= delta.dot(n) / nn * n;
+      for (int halving = 0; halving < 4; ++halving, delta *= 0.5) {
+        if (keepsFacesTurned(v, m_.positions[v] + delta)) {
+          next[v] += delta;
+          break;
+        }
+      }
+    }
+    m_.positions.swap(next);
+  }
+
+  // Drops dead faces (filling their slots with faces from the end, so every slot below the
+  // original face count stays filled: collapses never leave fewer patch faces than the patch had
+  // slots) and dead vertices (later new vertices move down).
+  void compact() {
+    int last = m_.faceCount() - 1;
+    for (int s = 0; s < m_.faceCount(); ++s) {
+      if (faceAlive_[s]) continue;
+      while (last > s && !faceAlive_[last]) --last;
+      if (last <= s) break;
+      m_.faces[s] = m_.faces[last];
+      patch_[s] = patch_[last];
+      faceAlive_[s] = 1;
+      faceAlive_[last--] = 0;
+    }
+    const int liveFaces = static_cast<int>(std::count(faceAlive_.begin(), faceAlive_.end(), 1));
+    m_.faces.resize(liveFaces);
+    patch_.resize(liveFaces);
+    std::vector<int> index(m_.positions.size());
+    int next = 0;
+    for (int v = 0; v < m_.vertexCount(); ++v) {
+      if (v >= firstNew_ && vertexFaces_[v].empty()) continue;
+      index[v] = next;
+      m_.positions[next] = m_.positions[v];
+      sigma_[next++] = sigma_[v];
+    }
+    m_.positions.resize(next);
+    sigma_.resize(next);
+    for (Face& t : m_.faces)
+      for (int& v : t) v = index[v];
+  }
+
+ private:
+  void addFace(const Face& t) {
+    const int f = m_.faceCount();
+    m_.faces.push_back(t);
+    patch_.push_back(1);
+    faceAlive_.push_back(1);
+    for (int v : t) vertexFaces_[v].push_back(f);
+    ++livePatchFaces_;
+  }
+  void setFace(int f, const Face& t) {
+    for (int v : m_.faces[f]) eraseFrom(vertexFaces_[v], f);
+    m_.faces[f] = t;
+    for (int v : t) vertexFaces_[v].push_back(f);
+  }
+  void killFace(int f) {
+    for (int v : m_.faces[f]) eraseFrom(vertexFaces_[v], f);
+    faceAlive_[f] = 0;
+    --livePatchFaces_;
+  }
+  static void eraseFrom(std::vector<int>& list, int f) { list.erase(std::find(list.begin(), list.end(), f)); }
+
+  // The normal (area-scaled) of face f with vertex v at p.
+  Vec3 normalOf(int f, int v, const Vec3& p) const {
+    const Face& t = m_.faces[f];
+    Vec3 q[3];
+    for (int k = 0; k < 3; ++k) q[k] = t[k] == v ? p : m_.positions[t[k]];
+    return faceNormal(q[0], q[1], q[2]);
+  }
+  bool keepsFacesTurned(int v, const Vec3& p) const {
+    for (int f : vertexFaces_[v]) {
+      const Vec3 before = normalOf(f, v, m_.positions[v]), after = normalOf(f, v, p);
+      if (after.dot(before) <= kMinNormalCosine * after.norm() * before.norm()) return false;
+    }
+    return true;
+  }
+
+  std::vector<int> neighbours(int v) const {
+    std::vector<int> out;
+    for (int f : vertexFaces_[v])
+      for (int u : m_.faces[f])
+        if (u != v) out.push_back(u);
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+  // Every patch vertex has a closed fan in the piece of mesh the caller hands over (the patch's
+  // border keeps its whole ring), so its valence is its face count.
+  int valence(int v) const { return static_cast<int>(vertexFaces_[v].size()); }
+  bool hasEdge(int a, int b) const {
+    for (int f : vertexFaces_[a]) {
+      const Face& t = m_.faces[f];
+      if (t[0] == b || t[1] == b || t[2] == b) return true;
+    }
+    return false;
+  }
+
+  TriMesh& m_;
+  std::vector<std::uint8_t>& patch_;
+  std::vector<double>& sigma_;
+  const int firstNew_;
+  std::vector<std::uint8_t> faceAlive_;
+  std::vector<std::vector<int>> vertexFaces_;
+  // compact() refills dead slots from the end of the face list: while the patch keeps at least as
+  // many faces as it has slots before the last face outside it, no face outside it moves.
+  int minPatchFaces_ = 0, livePatchFaces_ = 0;
+};
+
+}  // namespace
+
+void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+                 const PatchRemeshingOptions& opt) {
+  PatchEditor patch(mesh, patchFace, sigma, firstNew);
+  for (int round = 0; round < opt.iterations; ++round) {
+    for (int pass = 0; pass < kMaxSplitPasses; ++pass) {
+      bool any = false;
+      for (const auto& [a, b] : patch.patchEdges())
+        if (patch.length(a, b) > kSplitFactor * patch.target(a, b)) any = patch.split(a, b) || any;
+      if (!any) break;
+    }
+    for (const auto& [a, b] : patch.patchEdges())
+      if (patch.length(a, b) < kCollapseFactor * patch.target(a, b)) patch.collapseShort(a, b);
+    for (const auto& [a, b] : patch.patchEdges()) patch.flipForValence(a, b);
+    for (int k = 0; k < opt.relaxPasses; ++k) patch.relax();
+  }
+  patch.compact();
+}
+
+}  // namespace elastica
