@@ -175,10 +175,11 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
     state.maintain(area0);
     ++stage.steps;
     run.time += tau;
+    const double accepted = tau;
     tau *= kGrow;
     const double energy = state.energy();
     if (run.record(state, stage.level, energy)) return;
-    if (shapeSettled(state, tau / kGrow, run.opt.shapeTolerance)) return;
+    if (shapeSettled(state, accepted, run.opt.shapeTolerance)) return;
     window.push_back(energy);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
     const double before = window.front();

@@ -1,4 +1,5 @@
 #include <elastica/patch_remeshing.h>
+#include <elastica/submesh.h>
 
 #include <algorithm>
 #include <iterator>
@@ -16,6 +17,10 @@ constexpr int kTargetValence = 6;
 constexpr double kMinNormalCosine = 0.5;
 
 Vec3 faceNormal(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
+// Whether a face whose (area-scaled) normal was `before` is still turned the same way, with margin.
+bool turnsLittle(const Vec3& before, const Vec3& after) {
+  return after.dot(before) > kMinNormalCosine * after.norm() * before.norm();
+}
 
 // The patch with per-vertex face lists, edited in place. Dead faces and vertices are marked and
 // dropped by compact().
@@ -23,11 +28,10 @@ class PatchEditor {
  public:
   PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew)
       : m_(mesh), patch_(patchFace), sigma_(sigma), firstNew_(firstNew), faceAlive_(mesh.faces.size(), 1),
-        vertexFaces_(mesh.positions.size()) {
+        vertexFaces_(vertexFaces(mesh)) {
     sigma_.resize(m_.positions.size(), 0);
     int patchSoFar = 0;
     for (int f = 0; f < m_.faceCount(); ++f) {
-      for (int v : m_.faces[f]) vertexFaces_[v].push_back(f);
       if (patch_[f]) ++patchSoFar;
       else minPatchFaces_ = patchSoFar;
     }
@@ -93,15 +97,9 @@ class PatchEditor {
     for (int v : {a, b}) {
       for (int f : vertexFaces_[v]) {
         if (f == f0 || f == f1) continue;
-        Face t = m_.faces[f];
-        const Vec3 before = faceNormal(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]);
-        Vec3 q[3];
-        for (int k = 0; k < 3; ++k) {
-          q[k] = t[k] == v ? p : m_.positions[t[k]];
-          if (t[k] != v && (p - q[k]).norm() > kSplitFactor * 0.5 * (s + sigma_[t[k]])) return false;
-        }
-        const Vec3 after = faceNormal(q[0], q[1], q[2]);
-        if (after.dot(before) <= kMinNormalCosine * after.norm() * before.norm()) return false;
+        for (int u : m_.faces[f])
+          if (u != v && (p - m_.positions[u]).norm() > kSplitFactor * 0.5 * (s + sigma_[u])) return false;
+        if (!turnsLittle(normalOf(f, v, m_.positions[v]), normalOf(f, v, p))) return false;
       }
     }
     killFace(f0);
@@ -139,7 +137,7 @@ class PatchEditor {
     const Vec3 n0 = faceNormal(P[a], P[b], P[c]), n1 = faceNormal(P[b], P[a], P[d]);
     const Vec3 old = n0.normalized() + n1.normalized();
     for (const Vec3& n : {faceNormal(P[c], P[a], P[d]), faceNormal(P[d], P[b], P[c])})
-      if (n.dot(old) <= kMinNormalCosine * n.norm() * old.norm()) return false;
+      if (!turnsLittle(old, n)) return false;
     setFace(f0, {c, a, d});
     setFace(f1, {d, b, c});
     return true;
@@ -231,10 +229,8 @@ class PatchEditor {
     return faceNormal(q[0], q[1], q[2]);
   }
   bool keepsFacesTurned(int v, const Vec3& p) const {
-    for (int f : vertexFaces_[v]) {
-      const Vec3 before = normalOf(f, v, m_.positions[v]), after = normalOf(f, v, p);
-      if (after.dot(before) <= kMinNormalCosine * after.norm() * before.norm()) return false;
-    }
+    for (int f : vertexFaces_[v])
+      if (!turnsLittle(normalOf(f, v, m_.positions[v]), normalOf(f, v, p))) return false;
     return true;
   }
 
