@@ -12,13 +12,13 @@
 //       the semi-implicit system's numeric factorisation on icospheres, Eigen SimplicialLDLT
 //       against CHOLMOD supernodal (pattern analysed once, as in the flow).
 #include <elastica/fairing.h>
-#include <elastica/flow_state.h>
 #include <elastica/hole_filling.h>
 #include <elastica/io/mesh_reader.h>
-#include <elastica/semi_implicit_system.h>
 #include <elastica/shapes.h>
-#include <elastica/spd_solver.h>
 #include <elastica/vcg_adapter.h>
+#include "flow/flow_state.h"
+#include "flow/semi_implicit_system.h"
+#include "flow/spd_solver.h"
 
 #include <algorithm>
 #include <chrono>

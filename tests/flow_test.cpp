@@ -2,12 +2,12 @@
 // round, tori move toward the Clifford torus, energy decreases, and the scheme is scale-covariant.
 #include "test_meshes.h"
 
-#include <elastica/edge_flips.h>
 #include <elastica/energy.h>
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
 #include <elastica/shapes.h>
 #include <elastica/subdivision.h>
+#include "mesh/edge_flips.h"
 
 #include <gtest/gtest.h>
 

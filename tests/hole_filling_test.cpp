@@ -2,14 +2,14 @@
 #include "self_intersections.h"
 
 #include <elastica/errors.h>
-#include <elastica/hole_boundary.h>
 #include <elastica/hole_filling.h>
-#include <elastica/hole_triangulation.h>
 #include <elastica/mesh_quality.h>
 #include <elastica/shapes.h>
 #include <elastica/topology.h>
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
+#include "restoration/hole_boundary.h"
+#include "restoration/hole_triangulation.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Restoration on real meshes: the bundled bunny and CGAL's elephant (Debian's libcgal-demo, fetched by scripts/setup.sh),
 // with real holes, and with a region cut away and compared with what was cut.
-#include "../bench/surface_distance.h"
+#include "surface_distance.h"
 #include "self_intersections.h"
 
 #include <elastica/hole_filling.h>

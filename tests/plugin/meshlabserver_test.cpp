@@ -3,8 +3,8 @@
 // match `elastica run` with the same script and input: same counts, positions within 1e-5 of the
 // bounding-box diagonal (MeshLab stores float; both compute in double on a copy). Runs under
 // `xvfb-run -a` (ctest does that): MeshLab needs an X display even for meshlabserver.
-#include "../run_elastica.h"
-#include "../file_helpers.h"
+#include "run_elastica.h"
+#include "file_helpers.h"
 
 #include <elastica/io/mesh_reader.h>
 #include <elastica/io/mesh_writer.h>

@@ -27,7 +27,7 @@ enum class Scheme {
   /// The paper's explicit Euler step, τ = stepFactor · A_min² (stable, but the number of steps
   /// grows like the square of the vertex count).
   Explicit,
-  /// Linearly implicit in the stiff fourth-order part (DESIGN.md §4; the paper's future work):
+  /// Linearly implicit in the stiff fourth-order part (the paper's future work, §4):
   /// (M + τ/2 C M⁻¹ C) δ = τ M F for the normal displacement δ, everything else lagged; adaptive
   /// τ, a step accepted only if the energy does not rise, no face flips and no vertex jumps.
   /// Same fixed points as the explicit scheme (δ = 0 iff F = 0). Elastica and Laplacian of H.

@@ -5,8 +5,6 @@
 #pragma once
 
 #include <elastica/flow.h>
-#include <elastica/hole_pinches.h>
-#include <elastica/patch_refinement.h>
 #include <elastica/types.h>
 
 #include <cstdint>
@@ -14,6 +12,21 @@
 #include <vector>
 
 namespace elastica {
+
+/// Liepa's refinement of a hole's triangulation (restoration/patch_refinement.h).
+struct PatchRefinementOptions {
+  /// Liepa's density factor α: a triangle is split when α times each centroid–corner distance
+  /// exceeds the local edge length at the corner and at the centroid. √2 gives triangles about as
+  /// large as the surrounding ones.
+  double density = 1.4142135623730951;
+  int maxPasses = 64;  ///< split passes (each roughly triples the triangles that still need it)
+};
+
+/// Two copies of one point on a hole border: `removed` (the larger index) is welded into `kept`
+/// (restoration/hole_pinches.h).
+struct PinchWeld {
+  int kept = -1, removed = -1;
+};
 
 /// How far the pipeline goes (each stage is a comparison in the restoration benchmark).
 enum class FillStage {

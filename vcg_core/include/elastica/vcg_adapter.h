@@ -3,7 +3,7 @@
 // mesh: copy in, compute in double, write back once.
 #pragma once
 
-#include <elastica/hole_pinches.h>
+#include <elastica/hole_filling.h>
 #include <elastica/sign_convention.h>
 #include <elastica/types.h>
 

@@ -1,6 +1,6 @@
 #include <elastica/curvature.h>
 #include <elastica/laplacian.h>
-#include <elastica/parallel.h>
+#include "support/parallel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-#include <elastica/edge_flips.h>
 #include <elastica/topology.h>
+#include "mesh/edge_flips.h"
 
 #include <algorithm>
 #include <set>

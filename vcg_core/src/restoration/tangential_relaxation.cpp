@@ -1,6 +1,6 @@
 #include <elastica/geometry.h>
-#include <elastica/tangential_relaxation.h>
 #include <elastica/topology.h>
+#include "restoration/tangential_relaxation.h"
 
 namespace elastica {
 

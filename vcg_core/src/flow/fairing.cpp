@@ -1,7 +1,7 @@
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
-#include <elastica/flow_state.h>
 #include <elastica/subdivision.h>
+#include "flow/flow_state.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,7 +19,7 @@ namespace {
 // scheme failed.
 constexpr double kBlowUpFactor = 10;
 constexpr double kSizeJump = 2;
-// Semi-implicit step control (DESIGN.md §4): τ₀ = 0.05 ℓ⁴, ×1.5 on success, ×0.5 on rejection;
+// Semi-implicit step control (docs/benchmarks.md §2 measures it): τ₀ = 0.05 ℓ⁴, ×1.5 on success, ×0.5 on rejection;
 // below 1e-12 ℓ⁴ no step can lower the energy any more: the flow is at its noise floor.
 constexpr double kInitialTau = 0.05, kGrow = 1.5, kShrink = 0.5, kSmallestTau = 1e-12;
 // Semi-implicit plateau: relative energy change over this many accepted steps. Subdivision is

@@ -1,5 +1,5 @@
 #include <elastica/energy.h>
-#include <elastica/parallel.h>
+#include "support/parallel.h"
 
 namespace elastica {
 

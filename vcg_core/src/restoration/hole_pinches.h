@@ -6,18 +6,14 @@
 // through the point: filling them joins the fans and makes the vertex an ordinary one.
 #pragma once
 
-#include <elastica/hole_boundary.h>
+#include <elastica/hole_filling.h>
 #include <elastica/types.h>
+#include "restoration/hole_boundary.h"
 
 #include <functional>
 #include <vector>
 
 namespace elastica {
-
-/// Two copies of one point on a hole border: `removed` (the larger index) is welded into `kept`.
-struct PinchWeld {
-  int kept = -1, removed = -1;
-};
 
 struct PinchSplit {
   std::vector<HoleLoop> loops;   ///< simple loops (no two vertices at one position)

@@ -1,4 +1,4 @@
-#include <elastica/submesh.h>
+#include "restoration/submesh.h"
 
 #include <algorithm>
 

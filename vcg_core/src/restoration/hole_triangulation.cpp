@@ -1,4 +1,4 @@
-#include <elastica/hole_triangulation.h>
+#include "restoration/hole_triangulation.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,13 +1,13 @@
-#include <elastica/edge_flips.h>
 #include <elastica/energy.h>
 #include <elastica/errors.h>
-#include <elastica/flow_state.h>
 #include <elastica/laplacian.h>
-#include <elastica/parallel.h>
-#include <elastica/tangential.h>
+#include "flow/flow_state.h"
+#include "flow/tangential.h"
+#include "mesh/edge_flips.h"
+#include "support/parallel.h"
 
-#include <elastica/semi_implicit_system.h>
-#include <elastica/spd_solver.h>
+#include "flow/semi_implicit_system.h"
+#include "flow/spd_solver.h"
 
 #include <Eigen/SparseCore>
 

@@ -1,4 +1,4 @@
-#include <elastica/spd_solver.h>
+#include "flow/spd_solver.h"
 
 #include <Eigen/SparseCholesky>
 #ifdef ELASTICA_HAVE_CHOLMOD

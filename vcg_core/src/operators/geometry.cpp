@@ -1,6 +1,6 @@
 #include <elastica/errors.h>
 #include <elastica/geometry.h>
-#include <elastica/parallel.h>
+#include "support/parallel.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <elastica/hole_boundary.h>
+#include "restoration/hole_boundary.h"
 
 #include <algorithm>
 

@@ -1,5 +1,5 @@
-#include <elastica/parallel.h>
-#include <elastica/tangential.h>
+#include "flow/tangential.h"
+#include "support/parallel.h"
 
 namespace elastica {
 namespace {

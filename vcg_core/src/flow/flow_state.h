@@ -3,13 +3,13 @@
 // allocating. An integrator step reads the cached operators and moves the free vertices.
 #pragma once
 
-#include <elastica/boundary_slide.h>
-#include <elastica/constraints.h>
 #include <elastica/curvature.h>
 #include <elastica/flow.h>
 #include <elastica/geometry.h>
-#include <elastica/tangential.h>
 #include <elastica/topology.h>
+#include "flow/boundary_slide.h"
+#include "flow/constraints.h"
+#include "flow/tangential.h"
 
 #include <cstddef>
 #include <cstdint>

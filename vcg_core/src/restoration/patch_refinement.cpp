@@ -1,5 +1,5 @@
-#include <elastica/edge_flips.h>
-#include <elastica/patch_refinement.h>
+#include "mesh/edge_flips.h"
+#include "restoration/patch_refinement.h"
 
 namespace elastica {
 namespace {

@@ -1,4 +1,4 @@
-#include <elastica/hole_pinches.h>
+#include "restoration/hole_pinches.h"
 
 #include <algorithm>
 #include <numeric>

@@ -5,8 +5,8 @@
 // and never doubles back on itself the way greedy ear cutting can.
 #pragma once
 
-#include <elastica/hole_boundary.h>
 #include <elastica/types.h>
+#include "restoration/hole_boundary.h"
 
 #include <functional>
 #include <optional>

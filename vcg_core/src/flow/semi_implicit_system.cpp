@@ -1,4 +1,4 @@
-#include <elastica/semi_implicit_system.h>
+#include "flow/semi_implicit_system.h"
 
 #include <algorithm>
 #include <utility>

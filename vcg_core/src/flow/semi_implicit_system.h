@@ -1,4 +1,4 @@
-// The linear system of one semi-implicit step (DESIGN.md §4): to leading order
+// The linear system of one semi-implicit step: to leading order
 // F(P + δN) ≈ F − ½ Δ_B² δ, so the normal displacement δ of the free vertices f solves
 //   (M_ff + τ/2 · C_fa M_aa⁻¹ C_af) δ_f = τ M_ff F_f,
 // with a = free ∪ ring 1, C the cotangent matrix and M the vertex areas. SPD; about 19 nonzeros per

@@ -1,15 +1,16 @@
-#include <elastica/biharmonic_embedding.h>
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
-#include <elastica/hole_boundary.h>
 #include <elastica/hole_filling.h>
-#include <elastica/hole_pinches.h>
-#include <elastica/hole_triangulation.h>
 #include <elastica/mesh_quality.h>
-#include <elastica/patch_remeshing.h>
-#include <elastica/submesh.h>
-#include <elastica/tangential_relaxation.h>
 #include <elastica/topology.h>
+#include "restoration/biharmonic_embedding.h"
+#include "restoration/hole_boundary.h"
+#include "restoration/hole_pinches.h"
+#include "restoration/hole_triangulation.h"
+#include "restoration/patch_refinement.h"
+#include "restoration/patch_remeshing.h"
+#include "restoration/submesh.h"
+#include "restoration/tangential_relaxation.h"
 
 #include <algorithm>
 #include <chrono>

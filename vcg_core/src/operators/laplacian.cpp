@@ -1,5 +1,5 @@
 #include <elastica/laplacian.h>
-#include <elastica/parallel.h>
+#include "support/parallel.h"
 
 namespace elastica {
 namespace {

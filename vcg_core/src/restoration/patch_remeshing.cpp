@@ -1,5 +1,5 @@
-#include <elastica/patch_remeshing.h>
-#include <elastica/submesh.h>
+#include "restoration/patch_remeshing.h"
+#include "restoration/submesh.h"
 
 #include <algorithm>
 #include <iterator>

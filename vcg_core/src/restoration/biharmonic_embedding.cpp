@@ -1,7 +1,7 @@
-#include <elastica/biharmonic_embedding.h>
 #include <elastica/errors.h>
 #include <elastica/geometry.h>
 #include <elastica/topology.h>
+#include "restoration/biharmonic_embedding.h"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>

@@ -1,4 +1,4 @@
-#include <elastica/constraints.h>
+#include "flow/constraints.h"
 
 namespace elastica {
 

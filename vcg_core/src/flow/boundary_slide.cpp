@@ -1,4 +1,4 @@
-#include <elastica/boundary_slide.h>
+#include "flow/boundary_slide.h"
 
 #include <algorithm>
 #include <cmath>

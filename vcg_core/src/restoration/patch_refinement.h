@@ -3,20 +3,13 @@
 // are too large for the edge lengths at their corners, keep the patch Delaunay by edge flips.
 #pragma once
 
+#include <elastica/hole_filling.h>
 #include <elastica/types.h>
 
 #include <cstdint>
 #include <vector>
 
 namespace elastica {
-
-struct PatchRefinementOptions {
-  /// Liepa's density factor α: a triangle is split when α times each centroid–corner distance
-  /// exceeds the local edge length at the corner and at the centroid. √2 gives triangles about as
-  /// large as the surrounding ones.
-  double density = 1.4142135623730951;
-  int maxPasses = 64;  ///< split passes (each roughly triples the triangles that still need it)
-};
 
 /// Refines the faces flagged in `patchFace` (one byte per face; new faces are appended flagged).
 /// `sigma` holds the local edge length at each vertex (for the patch's border: the mean length of

@@ -1,0 +1,73 @@
+#!/usr/bin/env bash
+# Behaviour check for refactorings: runs a fixed set of `elastica` commands (every flow, both
+# schemes, subdivision, selection, sliding boundary, edge flips, fill and its stages, curvature,
+# subdivide, .mlx scripts) on bundled and generated meshes, and writes each output mesh and the
+# command's stdout (timing lines removed) into OUTDIR, with a SHA256SUMS file.
+#
+#   scripts/golden-outputs.sh BUILD_BIN_DIR OUTDIR
+#   diff before/SHA256SUMS after/SHA256SUMS     # byte-identical outputs: no difference
+#
+# Only step-bounded runs (no --max-seconds), on one thread (OMP_NUM_THREADS=1: a parallel sum's
+# order depends on the thread count), so two runs of the same code give the same bytes.
+set -euo pipefail
+bin=${1:?usage: golden-outputs.sh BUILD_BIN_DIR OUTDIR}
+out=${2:?usage: golden-outputs.sh BUILD_BIN_DIR OUTDIR}
+root=$(cd "$(dirname "$0")/.." && pwd)
+exe="$bin/elastica"
+[[ -x "$exe" ]] || { echo "golden-outputs: no elastica in $bin" >&2; exit 1; }
+export OMP_NUM_THREADS=1
+mkdir -p "$out"
+cd "$out"
+rm -f ./*.ply ./*.txt SHA256SUMS
+
+# name, then the command's arguments; stdout goes to NAME.txt without lines that carry seconds.
+run() {
+  local name=$1; shift
+  "$exe" "$@" 2>/dev/null | sed -E 's/[0-9.]+ s\b/# s/g; s/[0-9.]+ ms\b/# ms/g' >"$name.txt" \
+    || echo "exit $?" >>"$name.txt"
+}
+
+"$exe" generate icosphere --level 2 --noise 0.05 --seed 7 -o noisy.ply >/dev/null
+"$exe" generate torus --segments 24,12 -o torus.ply >/dev/null
+"$exe" generate frame -o frame.ply >/dev/null
+# Every other face of the bunny's first 400: a scattered selection (most vertices stay fixed).
+printf '%s\n' $(seq 0 2 400) >faces.txt
+
+run fair_explicit        fair noisy.ply -o fair_explicit.ply --max-steps 3000
+run fair_semi            fair noisy.ply -o fair_semi.ply --scheme semi-implicit
+run fair_lmc             fair noisy.ply -o fair_lmc.ply --flow lmc --max-steps 2000
+run fair_lmc_semi        fair noisy.ply -o fair_lmc_semi.ply --flow lmc --scheme semi-implicit --max-steps 200
+run fair_bilaplacian     fair noisy.ply -o fair_bilaplacian.ply --flow bilaplacian --max-steps 2000
+run fair_subdivide       fair noisy.ply -o fair_subdivide.ply --subdivide 1 --max-steps 4000
+run fair_subdivide_semi  fair noisy.ply -o fair_subdivide_semi.ply --scheme semi-implicit --subdivide 1
+run fair_torus_semi      fair torus.ply -o fair_torus_semi.ply --scheme semi-implicit --max-steps 150
+run fair_frame_remesh    fair frame.ply -o fair_frame_remesh.ply --scheme semi-implicit --subdivide 1 --remesh --max-steps 300
+run fair_frame_explicit  fair frame.ply -o fair_frame_explicit.ply --remesh --max-steps 3000 --h2k lambda --area barycentric
+run fair_bunny_selected  fair "$root/data/bunny.ply" -o fair_bunny_selected.ply --selected-faces faces.txt --scheme semi-implicit
+run fair_bunny_sel_expl  fair "$root/data/bunny.ply" -o fair_bunny_sel_expl.ply --selected-faces faces.txt --max-steps 2000 --no-tangential
+run fair_slide           fair "$root/data/bunny_flank_hole.ply" -o fair_slide.ply --boundary slide --max-steps 1500
+run fair_slide_semi      fair "$root/data/bunny_flank_hole.ply" -o fair_slide_semi.ply --boundary slide --scheme semi-implicit --max-steps 60
+run fair_color           fair noisy.ply -o fair_color.ply --max-steps 500 --color-by-mean-curvature --ascii
+run fill_default         fill "$root/data/bunny_flank_hole.ply" -o fill_default.ply --color-by-mean-curvature
+run fill_lmc             fill "$root/data/bunny_flank_hole.ply" -o fill_lmc.ply --flow lmc
+run fill_explicit        fill "$root/data/bunny_flank_hole.ply" -o fill_explicit.ply --scheme explicit --max-steps 3000
+for stage in triangulation refinement biharmonic; do
+  run fill_$stage        fill "$root/data/bunny_flank_hole.ply" -o fill_$stage.ply --stop-after $stage
+done
+run fill_shape0          fill "$root/data/bunny_flank_hole.ply" -o fill_shape0.ply --shape-tol 0 --max-steps 100
+elephant=$(ls -d "${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}"/cgal-data-*/elephant-with-holes.off 2>/dev/null | head -n1 || true)
+[[ -n "$elephant" ]] && run fill_elephant fill "$elephant" -o fill_elephant.ply
+run curvature            curvature "$root/data/bunny.ply" -o curvature.ply
+run curvature_paper      curvature "$root/data/bunny.ply" -o curvature_paper.ply --area barycentric --lambda-fix --ascii
+run subdivide            subdivide "$root/data/bunny.ply" -o subdivide.ply --levels 1
+# examples/fairing.mlx is left out: the explicit flow on the whole bunny runs for minutes.
+for s in "$root"/meshlab_plugin/examples/*.mlx "$root"/tests/plugin/scripts/fairing_explicit_*.mlx; do
+  name=run_$(basename "$s" .mlx)
+  [[ $name == run_fairing ]] && continue
+  input="$root/data/bunny.ply"
+  [[ $name == run_fill_holes ]] && input="$root/data/bunny_flank_hole.ply"
+  run "$name" run -i "$input" -o "$name.ply" -s "$s"
+done
+rm -f noisy.ply torus.ply frame.ply faces.txt
+sha256sum ./*.ply ./*.txt >SHA256SUMS
+echo "golden-outputs: $(ls ./*.ply | wc -l) meshes, $(ls ./*.txt | wc -l) transcripts in $out"
