@@ -257,8 +257,8 @@ int convergence(const std::string& bunny, double explicitSeconds, const std::vec
     ex.maxSeconds = explicitSeconds;
     si.scheme = Scheme::SemiImplicit;
     TriMesh a = torus, b = torus;
-    const FlowReport re = fair(a, nullptr, ex);
-    const FlowReport rs = fair(b, nullptr, si);
+    const FlowReport re = fair(a, ex);
+    const FlowReport rs = fair(b, si);
     char note[160];
     std::snprintf(note, sizeof note, "%d vertices; R/r explicit %.3f, semi-implicit %.3f (√2 = 1.414); 8π² = %.3f",
                   torus.vertexCount(), aspectRatio(a), aspectRatio(b), 8 * M_PI * M_PI);
@@ -283,7 +283,7 @@ int convergence(const std::string& bunny, double explicitSeconds, const std::vec
         return true;
       };
       TriMesh m = holed;
-      const HoleFillReport r = fillHoles(m, nullptr, o);
+      const HoleFillReport r = fillHoles(m, o);
       newVertices = r.holes.empty() ? 0 : r.holes[0].newVertices;
       if (r.holes.empty()) throw std::runtime_error("no hole in " + bunny);
       c.steps = r.holes[0].steps;

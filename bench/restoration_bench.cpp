@@ -94,12 +94,12 @@ int main(int argc, char** argv) {
               center.z(), 100 * radius / diagonal, diagonal);
 
   std::vector<Method> methods = {
-      {"triangulation", [](TriMesh& m) { fillHoles(m, nullptr, fillWith(FillStage::Triangulation, FlowType::Elastica, Scheme::SemiImplicit)); }},
-      {"bi-Laplace (ours)", [](TriMesh& m) { fillHoles(m, nullptr, fillWith(FillStage::Biharmonic, FlowType::Elastica, Scheme::SemiImplicit)); }},
-      {"bilaplacian flow", [](TriMesh& m) { fillHoles(m, nullptr, fillWith(FillStage::Flow, FlowType::Bilaplacian, Scheme::Explicit)); }},
-      {"Laplacian of H, semi-implicit", [](TriMesh& m) { fillHoles(m, nullptr, fillWith(FillStage::Flow, FlowType::LaplacianOfMeanCurvature, Scheme::SemiImplicit)); }},
-      {"elastica, semi-implicit", [](TriMesh& m) { fillHoles(m, nullptr, fillWith(FillStage::Flow, FlowType::Elastica, Scheme::SemiImplicit)); }},
-      {"elastica, explicit (paper)", [](TriMesh& m) { fillHoles(m, nullptr, fillWith(FillStage::Flow, FlowType::Elastica, Scheme::Explicit)); }},
+      {"triangulation", [](TriMesh& m) { fillHoles(m, fillWith(FillStage::Triangulation, FlowType::Elastica, Scheme::SemiImplicit)); }},
+      {"bi-Laplace (ours)", [](TriMesh& m) { fillHoles(m, fillWith(FillStage::Biharmonic, FlowType::Elastica, Scheme::SemiImplicit)); }},
+      {"bilaplacian flow", [](TriMesh& m) { fillHoles(m, fillWith(FillStage::Flow, FlowType::Bilaplacian, Scheme::Explicit)); }},
+      {"Laplacian of H, semi-implicit", [](TriMesh& m) { fillHoles(m, fillWith(FillStage::Flow, FlowType::LaplacianOfMeanCurvature, Scheme::SemiImplicit)); }},
+      {"elastica, semi-implicit", [](TriMesh& m) { fillHoles(m, fillWith(FillStage::Flow, FlowType::Elastica, Scheme::SemiImplicit)); }},
+      {"elastica, explicit (paper)", [](TriMesh& m) { fillHoles(m, fillWith(FillStage::Flow, FlowType::Elastica, Scheme::Explicit)); }},
 #ifdef ELASTICA_HAVE_CGAL
       {"CGAL triangulate_refine_and_fair_hole", [](TriMesh& m) { bench::cgalFillHoles(m); }},
 #endif

@@ -3,11 +3,8 @@
 #include "commands.h"
 #include "mesh_files.h"
 
-#include <elastica/curvature.h>
-#include <elastica/energy.h>
 #include <elastica/errors.h>
-#include <elastica/sign_convention.h>
-#include <elastica/topology.h>
+#include <elastica/mesh_curvature.h>
 #include <elastica/vcg_adapter.h>
 
 #include <algorithm>
@@ -30,32 +27,29 @@ void runCurvature(const CurvatureArgs& a) {
   VcgMesh vm;
   loadMesh(a.input, vm);
   const TriMesh mesh = toTriMesh(vm);
-  const Topology topo(mesh.vertexCount(), mesh.faces);
   // readMesh refused inconsistent orientation and non-manifold edges and split bow-tie vertices.
-  const Geometry geo = computeGeometry(topo, mesh.positions, a.area);
-  CurvatureOptions opt;
-  opt.h2k = a.lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
-  const Curvature c = computeCurvature(topo, geo, mesh.positions, opt);
-  const double energy = totalCurvatureEnergy(topo, geo, c);
+  CurvatureMeasureOptions opt;
+  opt.area = a.area;
+  opt.curvature.h2k = a.lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
+  const MeshCurvature c = measureCurvature(mesh, opt);
 
-  writeCurvaturePly(a.output, vm, a.lambdaFix ? c.Hflow : c.H, c.K, a.ascii, /*color=*/true);
+  writeCurvaturePly(a.output, vm, a.lambdaFix ? c.Hlambda : c.H, c.K, a.ascii, /*color=*/true);
 
   auto [hmin, hmax] = std::minmax_element(c.H.begin(), c.H.end());
   std::printf("%s: %s, %s, %s, Euler characteristic %d\n", a.input.c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
-              plural(mesh.faceCount(), "face").c_str(), topo.boundaryEdgeCount() ? "with boundary" : "closed",
-              topo.eulerCharacteristic());
+              plural(mesh.faceCount(), "face").c_str(), c.boundaryEdges ? "with boundary" : "closed",
+              c.eulerCharacteristic);
   // + 0.0 turns a negative zero into 0 for printing.
-  std::printf("mean curvature H (+1/r on a sphere): %.6g .. %.6g\n", reportedMeanCurvature(*hmax) + 0.0,
-              reportedMeanCurvature(*hmin) + 0.0);
+  std::printf("mean curvature H (+1/r on a sphere): %.6g .. %.6g\n", *hmin + 0.0, *hmax + 0.0);
   if (a.lambdaFix)
     std::printf("paper's lambda fix: lambda = %.6g on %zu vertices (H written is H/lambda there)\n", c.lambda,
                 c.lambdaVertices);
-  const DegeneracyCounts& d = geo.degenerate;
+  const DegeneracyCounts& d = c.degenerate;
   if (d.total() > 0)
     std::printf("degenerate, given zero weight: %zu zero-area faces, %zu zero-length edges, %zu vertices without "
                 "area, %zu isolated vertices\n",
                 d.zeroAreaFaces, d.zeroLengthEdges, d.zeroAreaVertices, d.isolatedVertices);
-  std::printf("total curvature energy E = %.9g\n", energy);
+  std::printf("total curvature energy E = %.9g\n", c.energy);
   std::printf("wrote %s\n", a.output.c_str());
 }
 

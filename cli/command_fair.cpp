@@ -6,10 +6,9 @@
 #include "flow_report.h"
 #include "mesh_files.h"
 
-#include <elastica/curvature.h>
-#include <elastica/energy.h>
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
+#include <elastica/mesh_curvature.h>
 #include <elastica/vcg_adapter.h>
 
 #include <cstdio>
@@ -71,7 +70,7 @@ void runFair(FairArgs& a) {
   a.flow.progress = terminalProgress("fair", a.progress);
   FlowReport report;
   try {
-    report = fair(mesh, restricted ? &selection : nullptr, a.flow);
+    report = restricted ? fair(mesh, FaceSet::fromFlags(selection), a.flow) : fair(mesh, a.flow);
   } catch (const FlowDivergedError& e) {
     endProgressLine();
     // The mesh is not written, but the report tells how far the run got and why it stopped.
@@ -93,9 +92,7 @@ void runFair(FairArgs& a) {
   // Keep the input's other attributes when the connectivity is unchanged (no subdivision, no flips).
   if (mesh.faces == inputFaces) writePositions(vm, mesh.positions);
   else fromTriMesh(mesh, vm);
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  const Geometry geo = computeGeometry(topo, mesh.positions, a.flow.area);
-  const Curvature curv = computeCurvature(topo, geo, mesh.positions, a.flow.curvature);
+  const MeshCurvature curv = measureCurvature(mesh, {a.flow.area, a.flow.curvature});
   writeCurvaturePly(a.output, vm, curv.H, curv.K, a.ascii, a.color);
 
   std::printf("%s: %d vertices, %d faces -> %d vertices, %d faces\n", a.input.c_str(), inVertices, inFaces,
@@ -108,7 +105,7 @@ void runFair(FairArgs& a) {
   if (!a.report.empty()) {
     nlohmann::json j = describe(toJson(report));
     j["output"] = {{"file", a.output}, {"vertices", mesh.vertexCount()}, {"faces", mesh.faceCount()}};
-    j["energy_output"] = totalCurvatureEnergy(topo, geo, curv);  // whole mesh, independent recomputation
+    j["energy_output"] = curv.energy;  // whole mesh, independent recomputation
     writeJson(a.report, j);
     std::printf("wrote %s\n", a.report.c_str());
   }

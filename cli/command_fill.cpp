@@ -6,7 +6,7 @@
 #include "flow_report.h"
 #include "mesh_files.h"
 
-#include <elastica/curvature.h>
+#include <elastica/mesh_curvature.h>
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
 #include <elastica/vcg_adapter.h>
@@ -58,10 +58,9 @@ void runFill(FillArgs& a) {
   const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
 
   a.fill.flow.progress = terminalProgress("fill", a.progress);
-  std::vector<std::uint8_t> isNew;
   HoleFillReport report;
   try {
-    report = fillHoles(mesh, &isNew, a.fill);
+    report = fillHoles(mesh, a.fill);
   } catch (...) {
     endProgressLine();
     throw;
@@ -73,13 +72,12 @@ void runFill(FillArgs& a) {
   if (!appendNewElements(mesh, vm)) fromTriMesh(mesh, vm);
   auto isNewAttr = vcg::tri::Allocator<VcgMesh>::GetPerFaceAttribute<float>(vm, "elastica_new");
   for (std::size_t f = 0; f < vm.face.size(); ++f) {
-    isNewAttr[f] = isNew[f] ? 1.0f : 0.0f;
-    if (isNew[f]) vm.face[f].SetS();
+    const bool isNew = report.isNewFace(static_cast<int>(f));
+    isNewAttr[f] = isNew ? 1.0f : 0.0f;
+    if (isNew) vm.face[f].SetS();
     else vm.face[f].ClearS();
   }
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  const Geometry geo = computeGeometry(topo, mesh.positions, a.fill.flow.area);
-  const Curvature curv = computeCurvature(topo, geo, mesh.positions, a.fill.flow.curvature);
+  const MeshCurvature curv = measureCurvature(mesh, {a.fill.flow.area, a.fill.flow.curvature});
   storeCurvature(vm, curv.H, curv.K);
   io::PlyWriteOptions w;
   w.binary = !a.ascii;

@@ -13,9 +13,9 @@ std::string plural(std::size_t n, const std::string& word) {
   return std::to_string(n) + " " + (ex ? word.substr(0, word.size() - 2) + "ices" : word + "s");
 }
 
-void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& paperH,
+void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& reportedH,
                        const std::vector<double>& K, bool ascii, bool color) {
-  storeCurvature(m, paperH, K);
+  storeCurvature(m, reportedH, K);
   io::PlyWriteOptions w;
   w.binary = !ascii;
   w.vertexQuality = w.curvature = true;

@@ -14,10 +14,10 @@ namespace elastica::cli {
 /// triangulated polygons, removed faces, split vertices; see io::readMesh). @throws IoError.
 io::ReadReport loadMesh(const std::string& path, VcgMesh& m);
 
-/// Stores H (the core's sign; reported as +1/r on a sphere) and K on `m` and writes it as PLY with
-/// quality = H and the mean_curvature / gaussian_curvature attributes, plus the colour ramp by H
-/// if `color`. @throws IoError.
-void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& paperH,
+/// Stores H (the reported sign, +1/r on a sphere: MeshCurvature::H) and K on `m` and writes it as
+/// PLY with quality = H and the mean_curvature / gaussian_curvature attributes, plus the colour
+/// ramp by H if `color`. @throws IoError.
+void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& reportedH,
                        const std::vector<double>& K, bool ascii, bool color);
 
 /// Human-readable count, e.g. "1 face" / "3 faces".

@@ -68,7 +68,7 @@ double aspectRatio(const TriMesh& m) {
 
 TEST(Flow, RoundSphereStaysRound) {
   TriMesh m = shapes::icosphere(1.0, 3);
-  const FlowReport r = fair(m, nullptr, FlowOptions{});
+  const FlowReport r = fair(m, FlowOptions{});
   EXPECT_EQ(r.stop, StopReason::Converged);
   for (const Vec3& p : m.positions) EXPECT_NEAR(p.norm(), 1.0, 1e-3);
 }
@@ -81,7 +81,7 @@ TEST(Flow, NoisySphereBecomesRound) {
   ASSERT_GT(radii(m).spread(), 0.08);
   FlowOptions opt;
   opt.subdivisionLevels = 1;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   EXPECT_EQ(r.stop, StopReason::Converged);
   ASSERT_EQ(r.stages.size(), 2u);
   EXPECT_EQ(m.vertexCount(), 642);
@@ -98,7 +98,7 @@ TEST(Flow, TorusMovesTowardCliffordTorus) {
   FlowOptions opt;
   opt.energyTolerance = 0;
   opt.maxSteps = 40000;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   for (size_t k = 1; k < r.history.size(); ++k) EXPECT_LE(r.history[k].energy, r.history[k - 1].energy) << k;
   const double a = aspectRatio(m);
   EXPECT_LT(a, 2.5);
@@ -116,7 +116,7 @@ TEST(Flow, EnergyNonIncreasingOnNoisySphere) {
     FlowOptions opt;
     opt.flow = flow;
     opt.maxSteps = 20000;
-    const FlowReport r = fair(m, nullptr, opt);
+    const FlowReport r = fair(m, opt);
     const double allowed = flow == FlowType::Bilaplacian ? 1e-2 : 1e-12;
     for (size_t k = 1; k < r.history.size(); ++k)
       EXPECT_LE(r.history[k].energy, r.history[k - 1].energy * (1 + allowed)) << int(flow) << " at " << k;
@@ -133,10 +133,10 @@ TEST(Flow, ScaleCovariance) {
     opt.energyTolerance = 0;
     opt.maxSteps = 2000;
     TriMesh ref = base;
-    fair(ref, nullptr, opt);
+    fair(ref, opt);
     for (double s : {1e3, 1e-3}) {
       TriMesh m = test::scaled(base, s);
-      const FlowReport r = fair(m, nullptr, opt);
+      const FlowReport r = fair(m, opt);
       EXPECT_EQ(r.steps, 2000);
       double worst = 0;
       for (int v = 0; v < m.vertexCount(); ++v) worst = std::max(worst, (m.positions[v] / s - ref.positions[v]).norm());
@@ -161,11 +161,11 @@ TEST(Flow, FixedVerticesAreBitIdentical) {
   }
   for (bool flips : {false, true}) {
     m = before;
-    std::vector<std::uint8_t> sel = selected;
     FlowOptions opt;
     opt.maxSteps = 3000;
     opt.flipEdges = flips;
-    const FlowReport r = fair(m, &sel, opt);
+    const FlowReport r = fair(m, FaceSet::fromFlags(selected), opt);
+    EXPECT_EQ(r.regionFaces, FaceSet::fromFlags(selected).faces);
     EXPECT_LT(r.energyFinal, r.energyInitial);
     int moved = 0;
     for (int v = 0; v < m.vertexCount(); ++v) {
@@ -186,7 +186,7 @@ TEST(Flow, FixedBoundaryClampsTwoRows) {
   const TriMesh before = m;
   FlowOptions opt;
   opt.maxSteps = 2000;
-  fair(m, nullptr, opt);
+  fair(m, opt);
   for (int v = 0; v < m.vertexCount(); ++v) {
     const int i = v % 11, j = v / 11;
     if (i <= 1 || j <= 1 || i >= 9 || j >= 9) EXPECT_EQ(m.positions[v], before.positions[v]) << v;
@@ -209,7 +209,7 @@ TEST(Flow, SlidingBoundaryStaysOnTheBoundary) {
   FlowOptions opt;
   opt.boundary = BoundaryMode::Slide;
   opt.maxSteps = 3000;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   EXPECT_LT(r.energyFinal, r.energyInitial);
   int slid = 0;
   for (int v = 0; v < m.vertexCount(); ++v) {
@@ -304,7 +304,7 @@ TEST(Flow, SubdivisionStageStartsFromTheCoarseResult) {
   FlowOptions opt;
   opt.subdivisionLevels = 2;
   opt.maxSteps = 200000;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   ASSERT_EQ(r.stages.size(), 3u);
   EXPECT_EQ(r.stages[1].faces, 4 * r.stages[0].faces);
   EXPECT_EQ(r.stages[2].faces, 4 * r.stages[1].faces);
@@ -316,25 +316,27 @@ TEST(Flow, LimitsCancellationAndErrors) {
   TriMesh m = noisy;
   FlowOptions opt;
   opt.maxSteps = 1234;
-  EXPECT_EQ(fair(m, nullptr, opt).steps, 1234);
-  EXPECT_EQ(fair(m, nullptr, opt).stop, StopReason::MaxSteps);
+  EXPECT_EQ(fair(m, opt).steps, 1234);
+  EXPECT_EQ(fair(m, opt).stop, StopReason::MaxSteps);
 
   m = noisy;
   opt.maxSteps = 1000000;
   opt.progress = [](const FlowProgress& p) { return p.step < 500; };
-  const FlowReport cancelled = fair(m, nullptr, opt);
+  const FlowReport cancelled = fair(m, opt);
   EXPECT_EQ(cancelled.stop, StopReason::Cancelled);
   EXPECT_EQ(cancelled.steps, 500);
 
   // Nothing selected: nothing can move.
   m = noisy;
-  std::vector<std::uint8_t> none(m.faceCount(), 0);
-  EXPECT_THROW(fair(m, &none, FlowOptions{}), InvalidInputError);
+  EXPECT_THROW(fair(m, FaceSet({}), FlowOptions{}), InvalidInputError);
+  EXPECT_EQ(m.positions, noisy.positions);
+  // A face index that is not a face of the mesh.
+  EXPECT_THROW(fair(m, FaceSet({0, m.faceCount()}), FlowOptions{}), InvalidInputError);
   EXPECT_EQ(m.positions, noisy.positions);
 
   FlowOptions bad;
   bad.stepFactor = -1;
-  EXPECT_THROW(fair(m, nullptr, bad), InvalidInputError);
+  EXPECT_THROW(fair(m, bad), InvalidInputError);
 }
 
 // The step and time limits hold in both schemes, however far the energy is from a plateau
@@ -349,7 +351,7 @@ TEST(Flow, StepAndTimeLimitsHoldInBothSchemes) {
     opt.energyTolerance = opt.plateauTolerance = 0;
     opt.maxSteps = 7;
     TriMesh m = noisy;
-    FlowReport r = fair(m, nullptr, opt);
+    FlowReport r = fair(m, opt);
     EXPECT_EQ(r.steps, 7);
     EXPECT_EQ(r.stop, StopReason::MaxSteps);
 
@@ -358,7 +360,7 @@ TEST(Flow, StepAndTimeLimitsHoldInBothSchemes) {
     opt.subdivisionLevels = 1;
     m = noisy;
     const auto start = std::chrono::steady_clock::now();
-    r = fair(m, nullptr, opt);
+    r = fair(m, opt);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_EQ(r.stop, StopReason::MaxSeconds);
     EXPECT_GE(r.seconds, 0.5);
@@ -373,11 +375,11 @@ TEST(Flow, LimitAtAStageEndDoesNotSubdivide) {
   FlowOptions opt;
   opt.subdivisionLevels = 1;
   TriMesh m = noisy;
-  const FlowReport full = fair(m, nullptr, opt);
+  const FlowReport full = fair(m, opt);
   ASSERT_EQ(full.stages.size(), 2u);
   opt.maxSteps = full.stages[0].steps;
   m = noisy;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   EXPECT_EQ(r.stop, StopReason::MaxSteps);
   EXPECT_EQ(r.steps, full.stages[0].steps);
   EXPECT_EQ(r.stages.size(), 1u);
@@ -393,7 +395,7 @@ TEST(Flow, DivergenceRestoresTheLastGoodState) {
   FlowOptions opt;
   opt.stepFactor = 50;
   opt.checkInterval = 10;
-  EXPECT_THROW(fair(m, nullptr, opt), NumericalError);
+  EXPECT_THROW(fair(m, opt), NumericalError);
   // The restored state is one that passed the checks: finite, size within a factor 2 per check.
   for (const Vec3& p : m.positions) EXPECT_TRUE(p.allFinite());
   EXPECT_LT(meanEdgeLength(topo, m.positions), 10 * edge0);
@@ -405,7 +407,7 @@ TEST(SemiImplicit, RoundSphereStaysRound) {
   TriMesh m = shapes::icosphere(1.0, 3);
   FlowOptions opt;
   opt.scheme = Scheme::SemiImplicit;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   EXPECT_EQ(r.stop, StopReason::Converged);
   for (const Vec3& p : m.positions) EXPECT_NEAR(p.norm(), 1.0, 1e-3);
 }
@@ -420,7 +422,7 @@ TEST(SemiImplicit, NoisySphereBecomesRound) {
   FlowOptions opt;
   opt.scheme = Scheme::SemiImplicit;
   opt.subdivisionLevels = 1;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   EXPECT_EQ(r.stop, StopReason::Converged);
   EXPECT_LT(r.steps, 500);
   EXPECT_EQ(m.vertexCount(), 642);
@@ -437,7 +439,7 @@ TEST(SemiImplicit, TorusReachesCliffordTorus) {
   TriMesh m = shapes::torus(3, 1, 96, 32);
   FlowOptions opt;
   opt.scheme = Scheme::SemiImplicit;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   EXPECT_EQ(r.stop, StopReason::Converged);
   EXPECT_LT(r.steps, 1000);
   EXPECT_NEAR(aspectRatio(m), std::sqrt(2.0), 0.03 * std::sqrt(2.0));
@@ -450,7 +452,7 @@ TEST(SemiImplicit, FixedVerticesAreBitIdentical) {
   const TriMesh before = m;
   FlowOptions opt;
   opt.scheme = Scheme::SemiImplicit;
-  const FlowReport r = fair(m, nullptr, opt);
+  const FlowReport r = fair(m, opt);
   EXPECT_LT(r.energyFinal, r.energyInitial);
   for (int v = 0; v < m.vertexCount(); ++v) {
     const int i = v % 13, j = v / 13;
@@ -474,7 +476,7 @@ TEST(SemiImplicit, DriftKeepsTheStepRules) {
     seen.emplace_back(p.level, p.energy);
     return true;
   };
-  fair(m, nullptr, opt);
+  fair(m, opt);
   ASSERT_GT(seen.size(), 20u);
   EXPECT_EQ(seen.back().first, 1);
   for (size_t k = 1; k < seen.size(); ++k) {
@@ -488,5 +490,5 @@ TEST(SemiImplicit, BilaplacianIsExplicitOnly) {
   FlowOptions opt;
   opt.scheme = Scheme::SemiImplicit;
   opt.flow = FlowType::Bilaplacian;
-  EXPECT_THROW(fair(m, nullptr, opt), InvalidInputError);
+  EXPECT_THROW(fair(m, opt), InvalidInputError);
 }

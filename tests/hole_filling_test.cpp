@@ -1,5 +1,6 @@
 // Shape restoration: holes cut from analytic surfaces are filled and compared with the surface.
 #include "self_intersections.h"
+#include "test_meshes.h"
 
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
@@ -95,8 +96,8 @@ TEST(HoleTriangulation, ClosesAPlanarHoleConsistently) {
 TEST(HoleFilling, RestoresASphereCap) {
   TriMesh mesh = sphereWithCapHole(70);
   const TriMesh before = mesh;
-  std::vector<std::uint8_t> isNew;
-  const HoleFillReport r = fillHoles(mesh, &isNew, {});
+  const HoleFillReport r = fillHoles(mesh, {});
+  const std::vector<std::uint8_t> isNew = test::newFaceFlags(mesh, r);
   ASSERT_EQ(r.holes.size(), 1u);
   const HoleReport& h = r.holes[0];
   EXPECT_TRUE(h.filled) << h.reason;
@@ -129,7 +130,7 @@ TEST(HoleFilling, DeepCapsRestoreWithoutSlivers) {
   for (double degrees : {110.0, 120.0}) {
     TriMesh mesh = sphereWithCapHole(degrees);
     const TriMesh before = mesh;
-    const HoleFillReport r = fillHoles(mesh, nullptr, {});
+    const HoleFillReport r = fillHoles(mesh, {});
     ASSERT_EQ(r.holes.size(), 1u);
     EXPECT_TRUE(r.holes[0].reason.empty()) << degrees << ": " << r.holes[0].reason;
     for (int i = 0; i < before.vertexCount(); ++i) ASSERT_EQ(mesh.positions[i], before.positions[i]) << degrees << ": " << i;
@@ -154,7 +155,7 @@ std::pair<double, double> cylinderPatchDeviation(FillStage stage) {
   HoleFillOptions opt;
   opt.maxHoleEdges = 47;  // the two end circles (48 edges each) stay open
   opt.stopAfter = stage;
-  const HoleFillReport r = fillHoles(mesh, nullptr, opt);
+  const HoleFillReport r = fillHoles(mesh, opt);
   EXPECT_EQ(r.filledCount(), 1);
   double out = 0, in = 0;
   for (int i = before; i < mesh.vertexCount(); ++i) {
@@ -190,7 +191,7 @@ TEST(HoleFilling, StopsOnceTheShapeHasSettled) {
     HoleFillOptions opt;
     opt.maxHoleEdges = 47;
     opt.flow.shapeTolerance = shapeTolerance;
-    const HoleFillReport r = fillHoles(mesh, nullptr, opt);
+    const HoleFillReport r = fillHoles(mesh, opt);
     EXPECT_EQ(r.filledCount(), 1);
     steps = 0;
     for (const HoleReport& h : r.holes) steps += h.steps;
@@ -214,8 +215,8 @@ TEST(HoleFilling, OnlyHolesWithinTheLimitAreFilled) {
   const TriMesh before = mesh;
   HoleFillOptions opt;
   opt.maxHoleEdges = 40;
-  std::vector<std::uint8_t> isNew;
-  const HoleFillReport r = fillHoles(mesh, &isNew, opt);
+  const HoleFillReport r = fillHoles(mesh, opt);
+  const std::vector<std::uint8_t> isNew = test::newFaceFlags(mesh, r);
   ASSERT_EQ(r.holes.size(), 3u);
   int filled = 0, skipped = 0;
   for (const HoleReport& h : r.holes) {
@@ -247,7 +248,7 @@ TEST(HoleFilling, FlowLimitsHoldOverAllHoles) {
   opt.maxHoleEdges = 40;
   opt.flow.maxSteps = 7;  // each hole alone takes more
   TriMesh m = mesh;
-  HoleFillReport r = fillHoles(m, nullptr, opt);
+  HoleFillReport r = fillHoles(m, opt);
   ASSERT_EQ(r.filledCount(), 2);
   std::vector<long long> steps;
   for (const HoleReport& h : r.holes) {
@@ -264,7 +265,7 @@ TEST(HoleFilling, FlowLimitsHoldOverAllHoles) {
   opt.flow.maxSteps = 1'000'000'000;
   opt.flow.maxSeconds = 0.5;
   m = mesh;
-  r = fillHoles(m, nullptr, opt);
+  r = fillHoles(m, opt);
   ASSERT_EQ(r.filledCount(), 2);
   for (const HoleReport& h : r.holes)
     if (h.filled) EXPECT_EQ(h.stop, StopReason::MaxSeconds) << h.reason;
@@ -278,7 +279,7 @@ TEST(HoleFilling, ScaleCovariant) {
   auto filled = [](double s) {
     TriMesh m = sphereWithCapHole(50);
     for (Vec3& p : m.positions) p *= s;
-    fillHoles(m, nullptr, {});
+    fillHoles(m, {});
     return m;
   };
   const TriMesh a = filled(1), b = filled(1024), c = filled(1.0 / 1024);
@@ -329,8 +330,8 @@ TEST(HoleFilling, BorderThroughTwoCopiesOfAPointIsSplitAndTheCopiesWelded) {
   }
   HoleFillOptions opt;
   opt.maxHoleEdges = 20;  // the rim stays open
-  std::vector<std::uint8_t> isNew;
-  const HoleFillReport r = fillHoles(mesh, &isNew, opt);
+  const HoleFillReport r = fillHoles(mesh, opt);
+  const std::vector<std::uint8_t> isNew = test::newFaceFlags(mesh, r);
 
   ASSERT_EQ(r.welds.size(), 1u);
   EXPECT_EQ(r.welds[0].removed, before.vertexCount() - 1);  // the copy goes, p stays
@@ -371,7 +372,7 @@ TEST(HoleFilling, WeldsAndNewElementsCarryOverToAVcgMesh) {
   fromTriMesh(mesh, vm);
   HoleFillOptions opt;
   opt.maxHoleEdges = 20;
-  const HoleFillReport r = fillHoles(mesh, nullptr, opt);
+  const HoleFillReport r = fillHoles(mesh, opt);
   ASSERT_EQ(r.welds.size(), 1u);
   applyWelds(r.welds, vm);
   ASSERT_TRUE(appendNewElements(mesh, vm));
@@ -385,7 +386,7 @@ TEST(HoleFilling, CopiesOfAPointStaySeparateWhereTheirHolesStayOpen) {
   const TriMesh before = mesh;
   HoleFillOptions opt;
   opt.maxHoleEdges = 7;  // both halves of the eight (8 edges each) too large
-  const HoleFillReport r = fillHoles(mesh, nullptr, opt);
+  const HoleFillReport r = fillHoles(mesh, opt);
   EXPECT_EQ(r.filledCount(), 0);
   EXPECT_TRUE(r.welds.empty());
   EXPECT_EQ(mesh.positions, before.positions);
@@ -398,7 +399,7 @@ TEST(HoleFilling, NonManifoldInputIsRefusedUnchanged) {
   mesh.positions.push_back(Vec3(5, 5, 5));
   mesh.faces.push_back({a, b, mesh.vertexCount() - 1});  // a third face on edge (a, b)
   const TriMesh before = mesh;
-  EXPECT_THROW(fillHoles(mesh, nullptr, {}), InvalidInputError);
+  EXPECT_THROW(fillHoles(mesh, {}), InvalidInputError);
   EXPECT_EQ(mesh.positions, before.positions);
   EXPECT_EQ(mesh.faces, before.faces);
 }

@@ -1,6 +1,7 @@
 // Restoration on real meshes: the bundled bunny and CGAL's elephant (Debian's libcgal-demo, fetched by scripts/setup.sh),
 // with real holes, and with a region cut away and compared with what was cut.
 #include "surface_distance.h"
+#include "test_meshes.h"
 #include "self_intersections.h"
 
 #include <elastica/hole_filling.h>
@@ -39,8 +40,8 @@ TEST(RealMeshes, ElephantWithHolesClosesToTheIntactElephantsTopology) {
   const Topology intactTopo(intact.vertexCount(), intact.faces);
   ASSERT_EQ(intactTopo.boundaryEdgeCount(), 0);
 
-  std::vector<std::uint8_t> isNew;
-  const HoleFillReport r = fillHoles(mesh, &isNew, {});
+  const HoleFillReport r = fillHoles(mesh, {});
+  const std::vector<std::uint8_t> isNew = test::newFaceFlags(mesh, r);
   for (const HoleReport& h : r.holes) EXPECT_TRUE(h.filled) << h.borderEdges << " edges: " << h.reason;
   // Every point the reader found stored as two copies lies on a hole border; all holes close, so
   // every pair is welded again.
@@ -75,7 +76,7 @@ void checkRestorationOfCut(const TriMesh& full, const Vec3& center, double radiu
     TriMesh m = holed;
     HoleFillOptions opt;
     opt.stopAfter = stage;
-    const HoleFillReport r = fillHoles(m, nullptr, opt);
+    const HoleFillReport r = fillHoles(m, opt);
     EXPECT_EQ(r.filledCount(), 1);
     std::vector<std::uint8_t> isNew(m.faces.size(), 0);
     for (int f = holed.faceCount(); f < m.faceCount(); ++f) isNew[f] = 1;

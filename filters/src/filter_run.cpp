@@ -115,23 +115,19 @@ FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, cons
   FairingResult r;
   const std::vector<Face> inputFaces = mesh.faces;
   const int inVertices = mesh.vertexCount();
-  const FlowReport report = fair(mesh, selected ? &selection : nullptr, opt);
+  const FlowReport report = selected ? fair(mesh, FaceSet::fromFlags(selection), opt) : fair(mesh, opt);
   if (report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
 
   r.connectivityChanged = mesh.faces != inputFaces;
   r.colorByMeanCurvature = v.getBool("colorByMeanCurvature");
-  if (r.colorByMeanCurvature) {
-    const Topology topo(mesh.vertexCount(), mesh.faces);
-    const Geometry geo = computeGeometry(topo, mesh.positions, opt.area);
-    r.curvature = computeCurvature(topo, geo, mesh.positions, opt.curvature);
-  }
+  if (r.colorByMeanCurvature) r.curvature = measureCurvature(mesh, {opt.area, opt.curvature});
   r.log.push_back(std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) + " vertices, " +
                   std::to_string(report.steps) + " steps in " + number(report.seconds, "%.2f") + " s (" +
                   stopText(report.stop) + ")");
   r.log.push_back("total curvature energy " + number(report.energyInitial, "%.9g") + " -> " +
                   number(report.energyFinal, "%.9g"));
   r.mesh = std::move(mesh);
-  if (selected) r.selection = std::move(selection);
+  if (selected) r.selection = FaceSet(report.regionFaces).flags(r.mesh.faces.size());
   return r;
 }
 
@@ -152,7 +148,9 @@ FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress&
   FillHolesResult r;
   r.originalVertices = mesh.vertexCount();
   r.originalFaces = mesh.faceCount();
-  const HoleFillReport report = fillHoles(mesh, &r.newFaces, opt);
+  const HoleFillReport report = fillHoles(mesh, opt);
+  r.newFaces.assign(mesh.faces.size(), 0);
+  for (std::size_t f = 0; f < r.newFaces.size(); ++f) r.newFaces[f] = report.isNewFace(static_cast<int>(f));
   for (const HoleReport& h : report.holes) {
     std::string line = "hole of " + std::to_string(h.borderEdges) + " border edges: ";
     if (h.filled)
@@ -196,7 +194,10 @@ CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v) {
     r.log.push_back("paper's lambda fix: lambda = " + number(c.lambda) + " on " + std::to_string(c.lambdaVertices) +
                     " vertices");
   r.log.push_back("total curvature energy E = " + number(totalCurvatureEnergy(topo, geo, c), "%.9g"));
-  r.H = lambdaFix ? std::move(c.Hflow) : std::move(c.H);
+  // Values leave the core here: the reported sign (+1/r on an outward sphere).
+  const std::vector<double>& H = lambdaFix ? c.Hflow : c.H;
+  r.H.resize(H.size());
+  std::transform(H.begin(), H.end(), r.H.begin(), reportedMeanCurvature);
   r.K = std::move(c.K);
   return r;
 }

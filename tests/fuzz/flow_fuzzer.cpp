@@ -72,7 +72,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
 
   try {
-    fair(mesh, nullptr, opt);
+    fair(mesh, opt);
   } catch (const Error&) {
     return 0;
   }

@@ -1,11 +1,21 @@
 // Helpers shared by the numerical tests.
 #pragma once
 
+#include <elastica/hole_filling.h>
 #include <elastica/types.h>
 
+#include <cstdint>
 #include <random>
+#include <vector>
 
 namespace elastica::test {
+
+/// One byte per face of `filled`: 1 on the faces fillHoles added.
+inline std::vector<std::uint8_t> newFaceFlags(const TriMesh& filled, const HoleFillReport& r) {
+  std::vector<std::uint8_t> flags(filled.faces.size());
+  for (int f = 0; f < filled.faceCount(); ++f) flags[f] = r.isNewFace(f);
+  return flags;
+}
 
 /// Scales all positions of `m` by `s` about the origin.
 inline TriMesh scaled(TriMesh m, double s) {

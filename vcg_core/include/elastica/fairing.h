@@ -2,6 +2,7 @@
 // subdivision, flow again), the stopping rules and the safety net.
 #pragma once
 
+#include <elastica/face_set.h>
 #include <elastica/flow.h>
 #include <elastica/types.h>
 
@@ -10,20 +11,35 @@
 
 namespace elastica {
 
-/// Fairs `mesh` in place with `opt.flow`.
+/// Fairs the whole of `mesh` in place with `opt.flow`, coarse to fine if opt.subdivisionLevels > 0.
 ///
-/// `faceSelected` (optional; one byte per face, non-zero = selected) restricts the flow to the
-/// vertices whose faces are all selected; the rest never move, bit for bit. When subdividing, the
-/// mesh and the selection are refined together (children inherit their parent's flag).
+/// Input: a triangle mesh with manifold edges and consistently oriented faces (what the readers
+/// of elastica::io guarantee). Vertices on the boundary and their one-ring neighbours stay fixed
+/// bit for bit with BoundaryMode::Fixed (two rows, for G¹ continuity); with BoundaryMode::Slide
+/// the boundary vertices move along the boundary curve. Without subdivision and edge flips the
+/// faces stay as they are; with them, the mesh is rebuilt (new vertices and faces appended,
+/// flipped faces renumbered in place).
 ///
-/// Stops at the energy plateau (FlowOptions::energyTolerance), or at maxSteps / maxSeconds, or
-/// when the progress callback cancels; the report says which.
+/// Stops at the energy plateau (FlowOptions::energyTolerance for the explicit scheme,
+/// plateauTolerance and shapeTolerance for the semi-implicit one), at maxSteps / maxSeconds, or
+/// when the progress callback cancels; FlowReport::stop says which.
 ///
 /// @throws InvalidInputError if the options are invalid, nothing can move, or a sliver would make
 ///         the explicit step vanish; the mesh is then unchanged.
 /// @throws FlowDivergedError (a NumericalError, carrying the report so far) if the flow diverges
 ///         (non-finite positions, an energy blow-up, the mesh size running away); the mesh is then
 ///         left in the last good state checked (at most checkInterval steps back).
-FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt);
+FlowReport fair(TriMesh& mesh, const FlowOptions& opt = {});
+
+/// Fairs only `region` of `mesh`: the vertices whose faces all lie in the region move; every
+/// other vertex keeps its position bit for bit (and, with a fixed boundary, so do the region's
+/// two outer rows, as if the region's border were the mesh's boundary). With subdivision the
+/// region is refined with the mesh (children inherit their parent's membership), and
+/// FlowReport::regionFaces lists the region's faces in the output mesh.
+///
+/// @throws InvalidInputError as the whole-mesh fair(), and if an index of `region` is not a face
+///         of `mesh` or the region leaves no vertex free to move; the mesh is then unchanged.
+/// @throws FlowDivergedError as the whole-mesh fair().
+FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt = {});
 
 }  // namespace elastica

@@ -143,6 +143,9 @@ struct FlowReport {
   StopReason stop = StopReason::Converged;
   std::vector<FlowStage> stages;
   std::vector<EnergySample> history;
+  /// fair(mesh, region, …): the region's faces in the output mesh, ascending (after subdivision,
+  /// the children of its faces). Empty when the whole mesh was faired.
+  std::vector<int> regionFaces;
 };
 
 /// Thrown when a flow diverges; carries the report of the run up to the failure

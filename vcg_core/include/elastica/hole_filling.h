@@ -82,18 +82,24 @@ struct HoleFillReport {
   /// vertex because a patch closed the gap between their fans, in the input's vertex numbers.
   /// The removed copies are gone from the output; the vertices after each move down by one.
   std::vector<PinchWeld> welds;
+  /// The output's faces from this index on are new (patch faces); the ones before it are the
+  /// input's, in their order.
+  int firstNewFace = 0;
+  bool isNewFace(int face) const { return face >= firstNewFace; }
   int filledCount() const;
   double seconds = 0;
 };
 
-/// Fills the holes of `mesh` with at most opt.maxHoleEdges border edges. Original vertices and
-/// faces keep their order and values bit for bit, and new vertices and faces are appended, with
-/// one exception: a hole border that passes twice through one point (two copies of a vertex,
-/// one per fan of faces) is split there into two holes, and the copies become one vertex where a
-/// patch joins their fans (HoleFillReport::welds; hole_pinches.h).
-/// `newFaceFlags` (optional) is resized to the face count, 1 on new faces and 0 elsewhere.
-/// A hole whose flow fails keeps its bi-Laplace patch; its report says so.
+/// Fills the holes of `mesh` with at most opt.maxHoleEdges border edges, in place.
+///
+/// Input: a triangle mesh with manifold edges (what the readers of elastica::io guarantee).
+/// Original vertices and faces keep their order and values bit for bit, and new vertices and faces
+/// are appended (HoleFillReport::firstNewFace), with one exception: a hole border that passes
+/// twice through one point (two copies of a vertex, one per fan of faces) is split there into two
+/// holes, and the copies become one vertex where a patch joins their fans
+/// (HoleFillReport::welds). A mesh without holes is left as it is. A hole whose flow fails keeps
+/// its bi-Laplace patch; its report says so.
 /// @throws InvalidInputError on non-manifold edges or invalid options; the mesh is then unchanged.
-HoleFillReport fillHoles(TriMesh& mesh, std::vector<std::uint8_t>* newFaceFlags, const HoleFillOptions& opt);
+HoleFillReport fillHoles(TriMesh& mesh, const HoleFillOptions& opt = {});
 
 }  // namespace elastica

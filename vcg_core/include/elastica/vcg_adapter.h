@@ -4,7 +4,6 @@
 #pragma once
 
 #include <elastica/hole_filling.h>
-#include <elastica/sign_convention.h>
 #include <elastica/types.h>
 
 #include <vcg/complex/complex.h>
@@ -113,23 +112,21 @@ void writePositions(VcgMeshT& m, const std::vector<Vec3>& p) {
 /// outward sphere): per-vertex float attributes "mean_curvature" and "gaussian_curvature",
 /// quality = H, and MeshLab's "Colorize by vertex quality" ramp (red = low H through yellow, green,
 /// cyan to blue = high H), over the 2–98 % percentiles so a few spikes do not wash out the picture.
-/// `paperH` is the core's H (sign_convention.h).
+/// `reportedH` is already in the reported sign (MeshCurvature::H; sign_convention.h).
 template <class VcgMeshT>
-void storeCurvature(VcgMeshT& m, const std::vector<double>& paperH, const std::vector<double>& K) {
+void storeCurvature(VcgMeshT& m, const std::vector<double>& reportedH, const std::vector<double>& K) {
   auto hAttr = vcg::tri::Allocator<VcgMeshT>::template GetPerVertexAttribute<float>(m, "mean_curvature");
   auto kAttr = vcg::tri::Allocator<VcgMeshT>::template GetPerVertexAttribute<float>(m, "gaussian_curvature");
-  std::vector<double> reported(paperH.size());
   size_t k = 0;
   for (auto vi = m.vert.begin(); vi != m.vert.end(); ++vi) {
     if (vi->IsD()) continue;
-    reported[k] = reportedMeanCurvature(paperH[k]);
-    hAttr[vi] = float(reported[k]);
+    hAttr[vi] = float(reportedH[k]);
     kAttr[vi] = float(K[k]);
-    vi->Q() = typename VcgMeshT::VertexType::QualityType(reported[k]);
+    vi->Q() = typename VcgMeshT::VertexType::QualityType(reportedH[k]);
     ++k;
   }
-  if (reported.empty()) return;
-  std::vector<double> sorted = reported;
+  if (reportedH.empty()) return;
+  std::vector<double> sorted = reportedH;
   auto percentile = [&](double q) {
     auto it = sorted.begin() + static_cast<long>(q * double(sorted.size() - 1));
     std::nth_element(sorted.begin(), it, sorted.end());

@@ -1,6 +1,7 @@
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
 #include <elastica/subdivision.h>
+#include "flow/fair_masked.h"
 #include "flow/flow_state.h"
 
 #include <algorithm>
@@ -191,7 +192,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
 
 }  // namespace
 
-FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt) {
+FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt) {
   validate(opt);
   FlowReport report;
   Run run{opt, report};
@@ -248,6 +249,20 @@ FlowReport fair(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const Fl
   report.seconds = run.elapsed();
   if (report.history.back().step != report.steps)
     report.history.push_back({report.steps, run.time, report.seconds, report.energyFinal});
+  return report;
+}
+
+FlowReport fair(TriMesh& mesh, const FlowOptions& opt) { return fairMasked(mesh, nullptr, opt); }
+
+FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt) {
+  std::vector<std::uint8_t> selection;
+  try {
+    selection = region.flags(mesh.faces.size());
+  } catch (const InvalidInputError& e) {
+    throw InvalidInputError(std::string("fair: the region's ") + e.what());
+  }
+  FlowReport report = fairMasked(mesh, &selection, opt);
+  report.regionFaces = FaceSet::fromFlags(selection).faces;
   return report;
 }
 

@@ -1,8 +1,8 @@
 #include <elastica/errors.h>
-#include <elastica/fairing.h>
 #include <elastica/hole_filling.h>
 #include <elastica/mesh_quality.h>
 #include <elastica/topology.h>
+#include "flow/fair_masked.h"
 #include "restoration/biharmonic_embedding.h"
 #include "restoration/hole_boundary.h"
 #include "restoration/hole_pinches.h"
@@ -108,7 +108,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   flow.boundary = BoundaryMode::Fixed;
   const TriMesh start = sub;
   try {
-    const FlowReport r = fair(sub, &patchFace, flow);
+    const FlowReport r = fairMasked(sub, &patchFace, flow);
     hole.energyBefore = r.energyInitial;
     hole.energyAfter = r.energyFinal;
     hole.steps = r.steps;
@@ -120,7 +120,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
       if (smallestAngleDegrees(sub, patchFace) < kRemeshBelowDegrees && remeshIfBetter()) {
         flow.maxSteps = std::max<long long>(flow.maxSteps - r.steps, 0);
         if (flow.maxSeconds > 0) flow.maxSeconds = std::max(flow.maxSeconds - r.seconds, 1e-9);
-        const FlowReport again = fair(sub, &patchFace, flow);
+        const FlowReport again = fairMasked(sub, &patchFace, flow);
         hole.energyAfter = again.energyFinal;
         hole.steps += again.steps;
         hole.stop = again.stop;
@@ -263,7 +263,7 @@ int HoleFillReport::filledCount() const {
   return static_cast<int>(std::count_if(holes.begin(), holes.end(), [](const HoleReport& h) { return h.filled; }));
 }
 
-HoleFillReport fillHoles(TriMesh& output, std::vector<std::uint8_t>* newFaceFlags, const HoleFillOptions& opt) {
+HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
   validate(opt);
   TriMesh mesh = output;  // the input stays as it was if anything throws
   const auto start = std::chrono::steady_clock::now();
@@ -366,10 +366,7 @@ HoleFillReport fillHoles(TriMesh& output, std::vector<std::uint8_t>* newFaceFlag
     if (hole.stop == StopReason::Cancelled) break;  // the caller's progress callback said stop
   }
   report.welds = settleWelds(mesh, adjacency, welds);
-  if (newFaceFlags) {
-    newFaceFlags->assign(mesh.faces.size(), 0);
-    std::fill(newFaceFlags->begin() + originalFaces, newFaceFlags->end(), 1);
-  }
+  report.firstNewFace = originalFaces;
   output = std::move(mesh);
   report.seconds = seconds(start);
   return report;

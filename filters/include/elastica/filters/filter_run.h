@@ -3,7 +3,7 @@
 // so its numerics are the same whoever calls it (the MeshLab plugin or `elastica run`).
 #pragma once
 
-#include <elastica/curvature.h>
+#include <elastica/mesh_curvature.h>
 #include <elastica/filters/filter_spec.h>
 #include <elastica/flow.h>
 #include <elastica/hole_filling.h>
@@ -37,7 +37,7 @@ struct FairingResult {
   std::vector<std::uint8_t> selection;   ///< the face selection, refined with the mesh (if one was given)
   bool connectivityChanged = false;      ///< subdivided or flipped: write the whole mesh back
   bool colorByMeanCurvature = false;
-  Curvature curvature;                   ///< of the result, when colorByMeanCurvature
+  MeshCurvature curvature;               ///< of the result, when colorByMeanCurvature
   std::vector<std::string> log;          ///< summary lines for the user
 };
 
@@ -68,7 +68,7 @@ FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress&
 
 /// What "Discrete Elastica Curvature" computed.
 struct CurvatureResult {
-  std::vector<double> H;  ///< the core's sign (sign_convention.h); H/λ where the λ fix applied
+  std::vector<double> H;  ///< the reported sign (+1/r on a sphere); H/λ where the λ fix applied
   std::vector<double> K;
   std::vector<std::string> log;
 };

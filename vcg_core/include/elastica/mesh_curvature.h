@@ -1,0 +1,43 @@
+// The curvature of a mesh in one call: per-vertex mean and Gaussian curvature and the total
+// curvature energy, for users and reports. (The flows use the cached operators of curvature.h.)
+#pragma once
+
+#include <elastica/curvature.h>
+#include <elastica/geometry.h>
+#include <elastica/types.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace elastica {
+
+struct CurvatureMeasureOptions {
+  VertexArea area = VertexArea::Mixed;  ///< Meyer et al.'s mixed area, or the paper's A/3
+  CurvatureOptions curvature;           ///< with H2KTreatment::PaperLambda, Hlambda is filled
+};
+
+struct MeshCurvature {
+  /// Mean curvature per vertex in the reported sign (sign_convention.h): +1/r on a sphere with
+  /// outward normals. 0 where a vertex has no usable area.
+  std::vector<double> H;
+  /// With the paper's λ rule: H/λ on the vertices it rescales, H elsewhere (reported sign);
+  /// empty otherwise.
+  std::vector<double> Hlambda;
+  std::vector<double> K;  ///< angle-deficit Gaussian curvature (2π − Σφ)/A; (π − Σφ)/A at the boundary
+  /// Total curvature energy E = Σ (4H² − 2K) A over interior regular vertices (energy.h), raw H.
+  double energy = 0;
+  double lambda = 1;                ///< the paper's λ (1 without the λ rule)
+  std::size_t lambdaVertices = 0;   ///< vertices the λ rule rescaled
+  DegeneracyCounts degenerate;      ///< faces, edges and vertices given zero weight
+  int eulerCharacteristic = 0;
+  std::size_t boundaryEdges = 0;
+};
+
+/// Measures `mesh`: nothing is changed. Input: a triangle mesh with manifold edges.
+/// Degenerate elements (zero-area faces, zero-length edges, isolated vertices) get zero weight and
+/// are counted in MeshCurvature::degenerate; they never make a value non-finite.
+/// @throws InvalidInputError on a non-manifold edge, a face index out of range or a face that
+///         repeats a vertex.
+MeshCurvature measureCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt = {});
+
+}  // namespace elastica

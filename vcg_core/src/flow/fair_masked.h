@@ -1,0 +1,19 @@
+// fair() on a selection given as one byte per face, in and out: what the public fair() overloads
+// and the hole filler (which fairs a patch inside a submesh) share.
+#pragma once
+
+#include <elastica/flow.h>
+#include <elastica/types.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace elastica {
+
+/// As fair(mesh, region, opt) with `*faceSelected` the region's flags (non-zero = in the region),
+/// or as fair(mesh, opt) if faceSelected is null or empty. The flags are refined with the mesh
+/// when it is subdivided (children inherit their parent's flag) and written back.
+/// @throws InvalidInputError also if the flags are not one per face.
+FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt);
+
+}  // namespace elastica
