@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "mesh_files.h"
 
+#include <elastica/app/choices.h>
 #include <elastica/errors.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/vcg_adapter.h>
@@ -65,11 +66,9 @@ void addCurvatureCommand(CLI::App& app) {
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
-  const std::map<std::string, VertexArea> areas{{"mixed", VertexArea::Mixed},
-                                                {"barycentric", VertexArea::Barycentric}};
   cmd->add_option("--area", args->area,
                   "vertex area: mixed (Meyer et al.'s mixed Voronoi area, default) or barycentric (the paper's A/3)")
-      ->transform(CLI::CheckedTransformer(areas, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(app::nameMap<VertexArea>(), CLI::ignore_case));
   cmd->add_flag("--lambda-fix", args->lambdaFix,
                 "apply the paper's lambda rescaling of H where H^2 < K (guarded); E still uses raw H");
   cmd->callback([args] { runCurvature(*args); });

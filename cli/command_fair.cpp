@@ -6,11 +6,11 @@
 #include "flow_report.h"
 #include "mesh_files.h"
 
+#include <elastica/app/choices.h>
+#include <elastica/app/filter_apply.h>
 #include <elastica/errors.h>
-#include <elastica/fairing.h>
-#include <elastica/mesh_curvature.h>
-#include <elastica/vcg_adapter.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -23,32 +23,20 @@ struct FairArgs {
   FlowOptions flow;
 };
 
-const char* flowName(FlowType f) {
-  switch (f) {
-    case FlowType::Elastica: return "elastica";
-    case FlowType::LaplacianOfMeanCurvature: return "lmc";
-    case FlowType::Bilaplacian: return "bilaplacian";
-  }
-  return "?";
-}
-
 void runFair(FairArgs& a) {
   io::checkOutputPath(a.output, a.input);
   if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
   VcgMesh vm;
   const io::ReadReport read = loadMesh(a.input, vm);
-  TriMesh mesh = toTriMesh(vm);
-  const std::vector<Face> inputFaces = mesh.faces;
-  const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
+  TriMesh input = toTriMesh(vm);
+  const int inVertices = input.vertexCount(), inFaces = input.faceCount();
 
   std::vector<std::uint8_t> selection;
   if (a.selected) {
     if (!read.hasFaceSelection) throw InvalidInputError(a.input + ": --selected, but the file has no face selection flags");
-    for (const auto& f : vm.face)
-      if (!f.IsD()) selection.push_back(f.IsS() ? 1 : 0);
-    int count = 0;
-    for (auto s : selection) count += s;
-    if (count == 0) throw InvalidInputError(a.input + ": --selected, but no face is selected");
+    selection = app::faceSelection(vm);
+    if (std::count(selection.begin(), selection.end(), 1) == 0)
+      throw InvalidInputError(a.input + ": --selected, but no face is selected");
   }
   if (!a.selectedFaces.empty()) {
     // The indices count the file's faces; reading must not have renumbered them.
@@ -58,19 +46,18 @@ void runFair(FairArgs& a) {
                               std::to_string(read.polygonsTriangulated) + " polygons triangulated, " +
                               std::to_string(read.degenerateFacesRemoved + read.duplicateFacesRemoved) +
                               " faces removed), so its face numbers do not match; save the mesh as triangles first");
-    selection = readFaceIndexFile(a.selectedFaces, mesh.faceCount());
+    selection = readFaceIndexFile(a.selectedFaces, inFaces);
   }
-  const bool restricted = !selection.empty();
 
   auto describe = [&](nlohmann::json j) {
     j["input"] = {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}};
-    j["flow"] = flowName(a.flow.flow);
+    j["flow"] = app::nameOf(a.flow.flow);
     return j;
   };
   a.flow.progress = terminalProgress("fair", a.progress);
-  FlowReport report;
+  app::FairingResult result;
   try {
-    report = restricted ? fair(mesh, FaceSet::fromFlags(selection), a.flow) : fair(mesh, a.flow);
+    result = app::runFairing(std::move(input), std::move(selection), a.flow, /*outputCurvature=*/true);
   } catch (const FlowDivergedError& e) {
     endProgressLine();
     // The mesh is not written, but the report tells how far the run got and why it stopped.
@@ -89,16 +76,17 @@ void runFair(FairArgs& a) {
   }
   endProgressLine();
 
-  // Keep the input's other attributes when the connectivity is unchanged (no subdivision, no flips).
-  if (mesh.faces == inputFaces) writePositions(vm, mesh.positions);
-  else fromTriMesh(mesh, vm);
-  const MeshCurvature curv = measureCurvature(mesh, {a.flow.area, a.flow.curvature});
+  // The input's other attributes stay when the connectivity is unchanged (no subdivision, no flips).
+  app::writeBack(result, vm);
+  const MeshCurvature& curv = result.curvature;
   writeCurvaturePly(a.output, vm, curv.H, curv.K, a.ascii, a.color);
+  const TriMesh& mesh = result.mesh;
+  const FlowReport& report = result.report;
 
   std::printf("%s: %d vertices, %d faces -> %d vertices, %d faces\n", a.input.c_str(), inVertices, inFaces,
               mesh.vertexCount(), mesh.faceCount());
-  std::printf("flow %s: %lld steps in %.2f s (%s), %zu stage%s\n", flowName(a.flow.flow), report.steps, report.seconds,
-              stopName(report.stop), report.stages.size(), report.stages.size() == 1 ? "" : "s");
+  std::printf("flow %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(a.flow.flow), report.steps, report.seconds,
+              app::nameOf(report.stop), report.stages.size(), report.stages.size() == 1 ? "" : "s");
   std::printf("energy %.9g -> %.9g\n", report.energyInitial, report.energyFinal);
   std::printf("wrote %s\n", a.output.c_str());
 
@@ -122,6 +110,7 @@ void addFairCommand(CLI::App& app) {
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   addFlowOptions(*cmd, args->flow);
+  addWholeMeshFlowOptions(*cmd, args->flow);
   CLI::Option* selected = cmd->add_flag(
       "--selected", args->selected,
       "fair only the selected faces (PLY face flags, as MeshLab saves its selection, or a face property 'selected'); "

@@ -6,14 +6,13 @@
 #include "flow_report.h"
 #include "mesh_files.h"
 
-#include <elastica/mesh_curvature.h>
+#include <elastica/app/choices.h>
+#include <elastica/app/filter_apply.h>
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
-#include <elastica/vcg_adapter.h>
 
 #include <cstdio>
 #include <iostream>
-#include <map>
 
 namespace elastica::cli {
 namespace {
@@ -24,16 +23,6 @@ struct FillArgs {
   HoleFillOptions fill;
 };
 
-const char* stageName(FillStage s) {
-  switch (s) {
-    case FillStage::Triangulation: return "triangulation";
-    case FillStage::Refinement: return "refinement";
-    case FillStage::Biharmonic: return "biharmonic";
-    case FillStage::Flow: return "flow";
-  }
-  return "?";
-}
-
 nlohmann::json toJson(const HoleReport& h) {
   nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}};
   if (!h.reason.empty()) j["reason"] = h.reason;
@@ -43,7 +32,7 @@ nlohmann::json toJson(const HoleReport& h) {
   j["energy_before"] = h.energyBefore;
   j["energy_after"] = h.energyAfter;
   j["steps"] = h.steps;
-  j["stop"] = stopName(h.stop);
+  j["stop"] = app::nameOf(h.stop);
   j["min_angle_degrees"] = h.minAngleDegrees;
   j["seconds"] = h.seconds;
   return j;
@@ -54,31 +43,27 @@ void runFill(FillArgs& a) {
   if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
   VcgMesh vm;
   loadMesh(a.input, vm);
-  TriMesh mesh = toTriMesh(vm);
-  const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
+  TriMesh input = toTriMesh(vm);
+  const int inVertices = input.vertexCount(), inFaces = input.faceCount();
 
   a.fill.flow.progress = terminalProgress("fill", a.progress);
-  HoleFillReport report;
+  app::FillHolesResult result;
   try {
-    report = fillHoles(mesh, a.fill);
+    result = app::runFillHoles(std::move(input), a.fill, /*outputCurvature=*/true);
   } catch (...) {
     endProgressLine();
     throw;
   }
   endProgressLine();
 
-  // New elements are appended: the input's own keep every attribute the file gave them.
-  applyWelds(report.welds, vm);
-  if (!appendNewElements(mesh, vm)) fromTriMesh(mesh, vm);
+  // New elements are appended: the input's own keep every attribute the file gave them. The new
+  // faces are selected and flagged by a face property.
+  app::writeBack(result, vm, /*selectNew=*/true);
+  const HoleFillReport& report = result.report;
+  const TriMesh& mesh = result.mesh;
   auto isNewAttr = vcg::tri::Allocator<VcgMesh>::GetPerFaceAttribute<float>(vm, "elastica_new");
-  for (std::size_t f = 0; f < vm.face.size(); ++f) {
-    const bool isNew = report.isNewFace(static_cast<int>(f));
-    isNewAttr[f] = isNew ? 1.0f : 0.0f;
-    if (isNew) vm.face[f].SetS();
-    else vm.face[f].ClearS();
-  }
-  const MeshCurvature curv = measureCurvature(mesh, {a.fill.flow.area, a.fill.flow.curvature});
-  storeCurvature(vm, curv.H, curv.K);
+  for (std::size_t f = 0; f < vm.face.size(); ++f) isNewAttr[f] = report.isNewFace(static_cast<int>(f)) ? 1.0f : 0.0f;
+  storeCurvature(vm, result.curvature.H, result.curvature.K);
   io::PlyWriteOptions w;
   w.binary = !a.ascii;
   w.vertexQuality = w.curvature = true;
@@ -97,7 +82,7 @@ void runFill(FillArgs& a) {
     }
     std::printf("hole %zu: %d border edges, filled with %s and %s", i + 1, h.borderEdges,
                 plural(h.newVertices, "vertex").c_str(), plural(h.newFaces, "face").c_str());
-    if (h.steps > 0) std::printf(", energy %.6g -> %.6g in %lld steps (%s)", h.energyBefore, h.energyAfter, h.steps, stopName(h.stop));
+    if (h.steps > 0) std::printf(", energy %.6g -> %.6g in %lld steps (%s)", h.energyBefore, h.energyAfter, h.steps, app::nameOf(h.stop));
     std::printf(", smallest angle %.1f deg, %.2f s\n", h.minAngleDegrees, h.seconds);
     if (!h.reason.empty()) std::cerr << "warning: hole " << i + 1 << ": " << h.reason << "\n";
   }
@@ -113,7 +98,7 @@ void runFill(FillArgs& a) {
   if (!a.report.empty()) {
     nlohmann::json j{{"input", {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}}},
                      {"output", {{"file", a.output}, {"vertices", mesh.vertexCount()}, {"faces", mesh.faceCount()}}},
-                     {"stop_after", stageName(a.fill.stopAfter)},
+                     {"stop_after", app::nameOf(a.fill.stopAfter)},
                      {"max_hole_edges", a.fill.maxHoleEdges},
                      {"filled", report.filledCount()},
                      {"skipped", skipped},
@@ -143,13 +128,9 @@ void addFillCommand(CLI::App& app) {
   cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")
       ->capture_default_str()
       ->check(CLI::Range(3, 100000));
-  const std::map<std::string, FillStage> stages{{"triangulation", FillStage::Triangulation},
-                                                {"refinement", FillStage::Refinement},
-                                                {"biharmonic", FillStage::Biharmonic},
-                                                {"flow", FillStage::Flow}};
   cmd->add_option("--stop-after", args->fill.stopAfter,
                   "triangulation, refinement, biharmonic (CGAL-like fairing) or flow (default)")
-      ->transform(CLI::CheckedTransformer(stages, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(app::nameMap<FillStage>(), CLI::ignore_case));
   cmd->add_option("--density", args->fill.refinement.density,
                   "Liepa's refinement factor: larger makes smaller triangles")
       ->capture_default_str()

@@ -7,8 +7,8 @@
 #include "mlx_script.h"
 
 #include <elastica/errors.h>
-#include <elastica/filters/filter_apply.h>
-#include <elastica/filters/filter_spec.h>
+#include <elastica/app/filter_apply.h>
+#include <elastica/app/filter_spec.h>
 
 #include <unistd.h>
 
@@ -22,7 +22,7 @@
 namespace elastica::cli {
 namespace {
 
-namespace ef = filters;
+namespace ea = app;
 
 struct RunArgs {
   std::string input, output, script;
@@ -31,8 +31,8 @@ struct RunArgs {
 
 // Parses a script value the way MeshLab reads it into the parameter's type (RichFloat is a float).
 // Returns false if `text` is not a value of that type.
-bool parseValue(ef::ParamType type, const std::string& text, double& out) {
-  if (type == ef::ParamType::Bool) {
+bool parseValue(ea::ParamType type, const std::string& text, double& out) {
+  if (type == ea::ParamType::Bool) {
     std::string lower;
     for (char c : text) lower += char(std::tolower(static_cast<unsigned char>(c)));
     if (lower != "true" && lower != "false") return false;
@@ -42,7 +42,7 @@ bool parseValue(ef::ParamType type, const std::string& text, double& out) {
   if (text.empty()) return false;
   char* end = nullptr;
   errno = 0;
-  if (type == ef::ParamType::Float) {
+  if (type == ea::ParamType::Float) {
     const float f = std::strtof(text.c_str(), &end);
     out = f;
     return *end == '\0' && errno == 0 && std::isfinite(f);
@@ -54,7 +54,7 @@ bool parseValue(ef::ParamType type, const std::string& text, double& out) {
 
 std::string knownFilters() {
   std::string names;
-  for (const ef::FilterSpec& s : ef::allFilters({})) names += (names.empty() ? "'" : ", '") + s.name + "'";
+  for (const ea::FilterSpec& s : ea::allFilters({})) names += (names.empty() ? "'" : ", '") + s.name + "'";
   return names;
 }
 
@@ -64,28 +64,28 @@ void checkScript(const std::string& path, const std::vector<MlxFilter>& script) 
   if (script.empty()) throw InvalidInputError(path + ": the script has no <filter>");
   for (const MlxFilter& f : script) {
     const std::string where = path + ":" + std::to_string(f.line) + ": ";
-    const auto id = ef::findFilter(f.name);
+    const auto id = ea::findFilter(f.name);
     if (!id)
       throw InvalidInputError(where + "unknown filter '" + f.name + "' (elastica run knows " + knownFilters() + ")");
-    const ef::FilterSpec spec = ef::filterSpec(*id, {});
+    const ea::FilterSpec spec = ea::filterSpec(*id, {});
     std::set<std::string> seen;
     for (const MlxParam& p : f.params) {
       const std::string at = path + ":" + std::to_string(p.line) + ": filter '" + f.name + "': parameter '" + p.name + "'";
-      const ef::ParamSpec* ps = spec.param(p.name);
+      const ea::ParamSpec* ps = spec.param(p.name);
       if (!ps) throw InvalidInputError(at + " is not one of its parameters");
       if (!seen.insert(p.name).second) throw InvalidInputError(at + " is given twice");
-      if (p.type != ef::richTypeName(ps->type))
-        throw InvalidInputError(at + " is a " + ef::richTypeName(ps->type) + ", not a " + p.type);
+      if (p.type != ea::richTypeName(ps->type))
+        throw InvalidInputError(at + " is a " + ea::richTypeName(ps->type) + ", not a " + p.type);
       double v;
       if (!parseValue(ps->type, p.value, v))
-        throw InvalidInputError(at + ": '" + p.value + "' is not a " + ef::richTypeName(ps->type) + " value");
+        throw InvalidInputError(at + ": '" + p.value + "' is not a " + ea::richTypeName(ps->type) + " value");
     }
   }
 }
 
-std::string describeDefault(const ef::ParamSpec& p) {
-  if (p.type == ef::ParamType::Bool) return p.defaultValue != 0 ? "true" : "false";
-  if (p.type == ef::ParamType::Enum) return std::to_string(int(p.defaultValue)) + " (" + p.enumValues[int(p.defaultValue)] + ")";
+std::string describeDefault(const ea::ParamSpec& p) {
+  if (p.type == ea::ParamType::Bool) return p.defaultValue != 0 ? "true" : "false";
+  if (p.type == ea::ParamType::Enum) return std::to_string(int(p.defaultValue)) + " (" + p.enumValues[int(p.defaultValue)] + ")";
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", p.defaultValue);
   return buf;
@@ -93,9 +93,9 @@ std::string describeDefault(const ef::ParamSpec& p) {
 
 // The values of one script filter on the current mesh: defaults (which may depend on the mesh,
 // as in MeshLab's dialog), overridden by the script.
-ef::ParamValues resolveValues(const std::string& path, const MlxFilter& f, const ef::FilterSpec& spec) {
-  ef::ParamValues values = ef::ParamValues::defaults(spec);
-  for (const ef::ParamSpec& ps : spec.params) {
+ea::ParamValues resolveValues(const std::string& path, const MlxFilter& f, const ea::FilterSpec& spec) {
+  ea::ParamValues values = ea::ParamValues::defaults(spec);
+  for (const ea::ParamSpec& ps : spec.params) {
     const MlxParam* given = nullptr;
     for (const MlxParam& p : f.params)
       if (p.name == ps.name) given = &p;
@@ -123,25 +123,25 @@ void runScript(const RunArgs& a) {
   w.faceFlags = read.hasFaceSelection;
   const bool tty = isatty(STDERR_FILENO);
   for (const MlxFilter& f : script) {
-    const ef::FilterId id = *ef::findFilter(f.name);
-    const ef::FilterSpec spec = ef::filterSpec(id, ef::meshFacts(vm));
-    const ef::ParamValues values = resolveValues(a.script, f, spec);
+    const ea::FilterId id = *ea::findFilter(f.name);
+    const ea::FilterSpec spec = ea::filterSpec(id, ea::meshFacts(vm));
+    const ea::ParamValues values = resolveValues(a.script, f, spec);
     bool drawn = false;
-    ef::Progress progress = [&](int, const std::string& what) {
+    ea::Progress progress = [&](int, const std::string& what) {
       if (tty) std::fprintf(stderr, "\r%s   ", what.c_str());
       drawn = tty;
       return true;
     };
     std::vector<std::string> summary;
     try {
-      summary = ef::applyFilter(id, vm, values, progress);
+      summary = ea::applyFilter(id, vm, values, progress);
     } catch (const Error& e) {
       if (drawn) std::fprintf(stderr, "\n");
       throw Error(a.script + ":" + std::to_string(f.line) + ": " + f.name + ": " + e.what() + "; nothing written");
     }
     if (drawn) std::fprintf(stderr, "\n");
     for (const std::string& line : summary) std::printf("%s: %s\n", f.name.c_str(), line.c_str());
-    const ef::FilterOutputs outputs = ef::filterOutputs(id, values);
+    const ea::FilterOutputs outputs = ea::filterOutputs(id, values);
     if (outputs.curvature) w.vertexQuality = w.vertexColor = w.curvature = true;
     if (outputs.faceSelection) w.faceFlags = true;
   }

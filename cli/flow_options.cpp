@@ -1,26 +1,16 @@
 #include "flow_options.h"
 
-#include <map>
-#include <string>
+#include <elastica/app/choices.h>
 
 namespace elastica::cli {
 
 void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
-  const std::map<std::string, FlowType> flows{{"elastica", FlowType::Elastica},
-                                              {"lmc", FlowType::LaplacianOfMeanCurvature},
-                                              {"bilaplacian", FlowType::Bilaplacian}};
   cmd.add_option("--flow", opt.flow,
                  "elastica (default: F = -Lap H - 2H(H^2-K)), lmc (F = -Lap H) or bilaplacian (P -= tau U0^2 P)")
-      ->transform(CLI::CheckedTransformer(flows, CLI::ignore_case));
-  const std::map<std::string, Scheme> schemes{{"explicit", Scheme::Explicit}, {"semi-implicit", Scheme::SemiImplicit}};
+      ->transform(CLI::CheckedTransformer(app::nameMap<FlowType>(), CLI::ignore_case));
   cmd.add_option("--scheme", opt.scheme,
                  "explicit (the paper's step; fair's default) or semi-implicit (adaptive, implicit in the 4th-order part; fill's default)")
-      ->transform(CLI::CheckedTransformer(schemes, CLI::ignore_case));
-  cmd.add_option("--subdivide", opt.subdivisionLevels,
-                 "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state")
-      ->check(CLI::Range(0, 8));
-  cmd.add_option("--target-edge", opt.targetEdgeLength, "stop subdividing once the mean edge length is at most this")
-      ->check(CLI::NonNegativeNumber);
+      ->transform(CLI::CheckedTransformer(app::nameMap<Scheme>(), CLI::ignore_case));
   cmd.add_option("--max-steps", opt.maxSteps, "step limit over all stages")->capture_default_str()->check(CLI::NonNegativeNumber);
   cmd.add_option("--max-seconds", opt.maxSeconds, "wall-time limit (0: none)")->check(CLI::NonNegativeNumber);
   cmd.add_option("--energy-tol", opt.energyTolerance,
@@ -31,22 +21,26 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
                  "semi-implicit: also stop once a step at the scale of the moving region moves no vertex along its "
                  "normal by more than this times the mean edge length (fill's default 1e-3; fair's 0: off)")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_flag("--remesh", opt.flipEdges,
-               "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check (always on in fill)");
   cmd.add_flag("--no-tangential{false}", opt.tangentialDrift, "disable the tangential drift that keeps triangles even");
-  const std::map<std::string, BoundaryMode> boundaries{{"fixed", BoundaryMode::Fixed}, {"slide", BoundaryMode::Slide}};
-  cmd.add_option("--boundary", opt.boundary,
-                 "fixed (default: boundary and next row clamped, G1) or slide (boundary vertices slide along it)")
-      ->transform(CLI::CheckedTransformer(boundaries, CLI::ignore_case));
-  const std::map<std::string, H2KTreatment> h2k{{"clamp", H2KTreatment::Clamp}, {"lambda", H2KTreatment::PaperLambda}};
   cmd.add_option("--h2k", opt.curvature.h2k, "H^2-K < 0: clamp (default) or lambda (the paper's rescaling, guarded)")
-      ->transform(CLI::CheckedTransformer(h2k, CLI::ignore_case));
-  const std::map<std::string, VertexArea> areas{{"mixed", VertexArea::Mixed}, {"barycentric", VertexArea::Barycentric}};
+      ->transform(CLI::CheckedTransformer(app::nameMap<H2KTreatment>(), CLI::ignore_case));
   cmd.add_option("--area", opt.area, "vertex area: mixed (default) or barycentric (the paper's A/3)")
-      ->transform(CLI::CheckedTransformer(areas, CLI::ignore_case));
+      ->transform(CLI::CheckedTransformer(app::nameMap<VertexArea>(), CLI::ignore_case));
   cmd.add_option("--step-factor", opt.stepFactor, "explicit step tau = factor * A_min^2 (paper: 1/150)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+}
+
+void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt) {
+  cmd.add_option("--subdivide", opt.subdivisionLevels,
+                 "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state")
+      ->check(CLI::Range(0, 8));
+  cmd.add_option("--target-edge", opt.targetEdgeLength, "stop subdividing once the mean edge length is at most this")
+      ->check(CLI::NonNegativeNumber);
+  cmd.add_flag("--remesh", opt.flipEdges, "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check");
+  cmd.add_option("--boundary", opt.boundary,
+                 "fixed (default: boundary and next row clamped, G1) or slide (boundary vertices slide along it)")
+      ->transform(CLI::CheckedTransformer(app::nameMap<BoundaryMode>(), CLI::ignore_case));
 }
 
 }  // namespace elastica::cli

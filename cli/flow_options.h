@@ -1,4 +1,4 @@
-// Command-line options shared by the commands that run a flow (fair, and later fill and run):
+// Command-line options of the commands that run a flow (fair and fill):
 // they fill one FlowOptions, the same struct the MeshLab plugin fills from its dialog.
 #pragma once
 
@@ -8,8 +8,14 @@
 
 namespace elastica::cli {
 
-/// Registers --flow, --scheme, --subdivide, --target-edge, --max-steps, --max-seconds, --energy-tol,
-/// --remesh, --no-tangential, --boundary, --h2k, --area and --step-factor on `cmd`, writing into `opt`.
+/// Registers what every flow run honours: --flow, --scheme, --max-steps, --max-seconds,
+/// --energy-tol, --shape-tol, --no-tangential, --h2k, --area and --step-factor, writing into `opt`.
+/// Choices are the application layer's names (app/choices.h).
 void addFlowOptions(CLI::App& cmd, FlowOptions& opt);
+
+/// Registers what only a flow over a whole mesh or region honours (not a hole's patch, whose
+/// surroundings are fixed and whose faces must not be split): --subdivide, --target-edge,
+/// --remesh, --boundary.
+void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt);
 
 }  // namespace elastica::cli

@@ -1,5 +1,6 @@
 #include "flow_report.h"
 
+#include <elastica/app/choices.h>
 #include <elastica/errors.h>
 #include <elastica/io/atomic_file.h>
 
@@ -15,18 +16,6 @@ bool gLineDrawn = false;
 
 }  // namespace
 
-const char* stopName(StopReason s) {
-  switch (s) {
-    case StopReason::Converged: return "converged";
-    case StopReason::Stalled: return "stalled";
-    case StopReason::MaxSteps: return "max_steps";
-    case StopReason::MaxSeconds: return "max_seconds";
-    case StopReason::Cancelled: return "cancelled";
-    case StopReason::Diverged: return "diverged";
-  }
-  return "unknown";
-}
-
 nlohmann::json toJson(const FlowReport& r) {
   nlohmann::json j;
   j["energy_initial"] = r.energyInitial;
@@ -34,7 +23,7 @@ nlohmann::json toJson(const FlowReport& r) {
   j["steps"] = r.steps;
   j["rejected_steps"] = r.rejectedSteps;
   j["seconds"] = r.seconds;
-  j["stop"] = stopName(r.stop);
+  j["stop"] = app::nameOf(r.stop);
   j["min_lambda"] = r.minLambda;
   j["stages"] = nlohmann::json::array();
   for (const FlowStage& s : r.stages)

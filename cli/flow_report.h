@@ -14,10 +14,6 @@ namespace elastica::cli {
 /// energy_history[].
 nlohmann::json toJson(const FlowReport& r);
 
-/// Name of a stop reason as written in reports: converged, stalled, max_steps, max_seconds,
-/// cancelled, diverged.
-const char* stopName(StopReason s);
-
 /// Writes `j` to `path` atomically. @throws IoError.
 void writeJson(const std::string& path, const nlohmann::json& j);
 

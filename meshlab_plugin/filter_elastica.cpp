@@ -1,30 +1,30 @@
 #include "filter_elastica.h"
 
 #include <elastica/errors.h>
-#include <elastica/filters/filter_apply.h>
-#include <elastica/filters/filter_spec.h>
+#include <elastica/app/filter_apply.h>
+#include <elastica/app/filter_spec.h>
 
 #include <new>
 
-namespace ef = elastica::filters;
+namespace ea = elastica::app;
 
 namespace {
 
-ef::FilterId filterId(MeshFilterInterface::FilterIDType id) { return static_cast<ef::FilterId>(id); }
+ea::FilterId filterId(MeshFilterInterface::FilterIDType id) { return static_cast<ea::FilterId>(id); }
 
 QString qs(const std::string& s) { return QString::fromStdString(s); }
 
 // The filter's parameters, read back from MeshLab's list by the shared spec's names and types.
-ef::ParamValues readParameters(const ef::FilterSpec& spec, const RichParameterList& params) {
-  ef::ParamValues v;
-  for (const ef::ParamSpec& p : spec.params) {
+ea::ParamValues readParameters(const ea::FilterSpec& spec, const RichParameterList& params) {
+  ea::ParamValues v;
+  for (const ea::ParamSpec& p : spec.params) {
     const QString name = qs(p.name);
     if (!params.hasParameter(name)) throw elastica::InvalidInputError("parameter '" + p.name + "' is missing");
     switch (p.type) {
-      case ef::ParamType::Bool: v.set(p.name, params.getBool(name) ? 1 : 0); break;
-      case ef::ParamType::Int: v.set(p.name, params.getInt(name)); break;
-      case ef::ParamType::Float: v.set(p.name, params.getFloat(name)); break;
-      case ef::ParamType::Enum: v.set(p.name, params.getEnum(name)); break;
+      case ea::ParamType::Bool: v.set(p.name, params.getBool(name) ? 1 : 0); break;
+      case ea::ParamType::Int: v.set(p.name, params.getInt(name)); break;
+      case ea::ParamType::Float: v.set(p.name, params.getFloat(name)); break;
+      case ea::ParamType::Enum: v.set(p.name, params.getEnum(name)); break;
     }
   }
   return v;
@@ -33,7 +33,7 @@ ef::ParamValues readParameters(const ef::FilterSpec& spec, const RichParameterLi
 }  // namespace
 
 FilterElasticaPlugin::FilterElasticaPlugin() {
-  for (const ef::FilterSpec& s : ef::allFilters({})) {
+  for (const ea::FilterSpec& s : ea::allFilters({})) {
     typeList << static_cast<FilterIDType>(s.id);
     actionList << new QAction(qs(s.name), this);
   }
@@ -44,16 +44,16 @@ FilterElasticaPlugin::~FilterElasticaPlugin() = default;  // the actions are chi
 QString FilterElasticaPlugin::pluginName() const { return "FilterElastica"; }
 
 QString FilterElasticaPlugin::filterName(FilterIDType filter) const {
-  return qs(ef::filterSpec(filterId(filter), {}).name);
+  return qs(ea::filterSpec(filterId(filter), {}).name);
 }
 
 QString FilterElasticaPlugin::filterInfo(FilterIDType filter) const {
-  return qs(ef::filterSpec(filterId(filter), {}).info);
+  return qs(ea::filterSpec(filterId(filter), {}).info);
 }
 
 // Filters > "Smoothing, Fairing and Deformation"; the curvature filter also under Normal/Curvature.
 MeshFilterInterface::FilterClass FilterElasticaPlugin::getClass(QAction* action) {
-  if (filterId(ID(action)) == ef::FilterId::Curvature)
+  if (filterId(ID(action)) == ea::FilterId::Curvature)
     return FilterClass(MeshFilterInterface::Smoothing | MeshFilterInterface::Normal);
   return MeshFilterInterface::Smoothing;
 }
@@ -63,7 +63,7 @@ int FilterElasticaPlugin::getRequirements(QAction*) { return MeshModel::MM_NONE;
 int FilterElasticaPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
 
 int FilterElasticaPlugin::postCondition(QAction* action) const {
-  if (filterId(ID(action)) == ef::FilterId::Curvature)
+  if (filterId(ID(action)) == ea::FilterId::Curvature)
     return MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
   return MeshModel::MM_ALL;  // fairing may subdivide: connectivity changes
 }
@@ -71,14 +71,14 @@ int FilterElasticaPlugin::postCondition(QAction* action) const {
 MeshFilterInterface::FILTER_ARITY FilterElasticaPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
 
 void FilterElasticaPlugin::initParameterSet(QAction* action, MeshModel& m, RichParameterList& params) {
-  const ef::FilterSpec spec = ef::filterSpec(filterId(ID(action)), ef::meshFacts(m.cm));
-  for (const ef::ParamSpec& p : spec.params) {
+  const ea::FilterSpec spec = ea::filterSpec(filterId(ID(action)), ea::meshFacts(m.cm));
+  for (const ea::ParamSpec& p : spec.params) {
     const QString name = qs(p.name), label = qs(p.label), tip = qs(p.tooltip);
     switch (p.type) {
-      case ef::ParamType::Bool: params.addParam(RichBool(name, p.defaultValue != 0, label, tip)); break;
-      case ef::ParamType::Int: params.addParam(RichInt(name, int(p.defaultValue), label, tip)); break;
-      case ef::ParamType::Float: params.addParam(RichFloat(name, float(p.defaultValue), label, tip)); break;
-      case ef::ParamType::Enum: {
+      case ea::ParamType::Bool: params.addParam(RichBool(name, p.defaultValue != 0, label, tip)); break;
+      case ea::ParamType::Int: params.addParam(RichInt(name, int(p.defaultValue), label, tip)); break;
+      case ea::ParamType::Float: params.addParam(RichFloat(name, float(p.defaultValue), label, tip)); break;
+      case ea::ParamType::Enum: {
         QStringList values;
         for (const std::string& e : p.enumValues) values << qs(e);
         params.addParam(RichEnum(name, int(p.defaultValue), values, label, tip));
@@ -94,15 +94,15 @@ bool FilterElasticaPlugin::applyFilter(QAction* action, MeshDocument& md, const 
   try {
     MeshModel* mm = md.mm();
     if (mm == nullptr) throw elastica::InvalidInputError("no current mesh");
-    const ef::FilterId id = filterId(ID(action));
-    const ef::FilterSpec spec = ef::filterSpec(id, ef::meshFacts(mm->cm));
+    const ea::FilterId id = filterId(ID(action));
+    const ea::FilterSpec spec = ea::filterSpec(id, ea::meshFacts(mm->cm));
     name = spec.name;
-    const ef::ParamValues values = readParameters(spec, params);
-    ef::Progress progress;
+    const ea::ParamValues values = readParameters(spec, params);
+    ea::Progress progress;
     if (cb) progress = [cb](int percent, const std::string& what) { return cb(percent, what.c_str()); };
 
-    const std::vector<std::string> summary = ef::applyFilter(id, mm->cm, values, progress);
-    if (ef::filterOutputs(id, values).curvature) mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
+    const std::vector<std::string> summary = ea::applyFilter(id, mm->cm, values, progress);
+    if (ea::filterOutputs(id, values).curvature) mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
     mm->UpdateBoxAndNormals();
     for (const std::string& line : summary) Log("%s: %s", name.c_str(), line.c_str());
     return true;

@@ -2,7 +2,7 @@
 # Checks the README's "Layout" section against the tree (run by ctest as readme_layout):
 #  - every path it names (a word with a slash) exists;
 #  - every top-level folder, every folder of vcg_core/ and every source file of the core's public
-#    headers and of vcg_core/src/ and vcg_core/io/ is named there (a file by its name or its stem).
+#    headers, of vcg_core/src/, vcg_core/io/ and app/ is named there (a file by its name or its stem).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -34,7 +34,7 @@ for d in $(git ls-files vcg_core | cut -d/ -f2-3 | grep / | sort -u); do
   [[ -d "vcg_core/$d" ]] || continue
   [[ "$block" == *"$d/"* || "$block" == *"${d#*/}/"* ]] || missing "folder vcg_core/$d/ is not in the README's layout"
 done
-for f in $(git ls-files vcg_core/include/elastica vcg_core/src vcg_core/io | grep -E '\.(h|cpp)$'); do
+for f in $(git ls-files --cached --others --exclude-standard vcg_core/include/elastica vcg_core/src vcg_core/io app | grep -E '\.(h|cpp)$'); do
   named "$(basename "$f")" || missing "$f is not named in the README's layout"
 done
 [[ $fail == 0 ]] && echo "check-layout: README layout matches the tree"

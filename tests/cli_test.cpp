@@ -342,11 +342,20 @@ TEST(Cli, FillSkipsHolesAboveTheLimit) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("skipped: larger than the limit of 10 border edges"), std::string::npos) << run.output;
   EXPECT_EQ(test::readAsciiPly(dir.file("r.ply")).faceCount, test::readAsciiPly(in).faceCount);
-  // Subdivision would split original faces: refused, nothing written.
-  const CommandResult bad = runElastica("fill " + in + " -o " + dir.file("s.ply") + " --subdivide 1");
-  EXPECT_EQ(bad.exitCode, 1);
-  EXPECT_NE(bad.output.find("subdivision is not available"), std::string::npos) << bad.output;
-  EXPECT_FALSE(std::filesystem::exists(dir.file("s.ply")));
+}
+
+// fill offers only the options it honours: subdivision would split original faces, the patch's
+// surroundings are always fixed, and its flow always flips edges. Each is a usage error (exit 2),
+// and nothing is written.
+TEST(Cli, FillRejectsTheOptionsItDoesNotHonour) {
+  ScratchDir dir("cli-fill-options");
+  const std::string in = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";
+  for (const std::string option : {"--subdivide 1", "--boundary slide", "--remesh", "--target-edge 0.1"}) {
+    const CommandResult bad = runElastica("fill " + in + " -o " + dir.file("s.ply") + " " + option);
+    EXPECT_EQ(bad.exitCode, 2) << option;
+    EXPECT_NE(bad.output.find("not expected"), std::string::npos) << option << ": " << bad.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("s.ply"))) << option;
+  }
 }
 
 }  // namespace elastica

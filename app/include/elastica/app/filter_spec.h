@@ -8,12 +8,13 @@
 // parameter only when an issue asks for it, and never rename one.
 #pragma once
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-namespace elastica::filters {
+namespace elastica::app {
 
 /// The filters, in menu order. The values are the plugin's FilterIDType ids.
 enum class FilterId { Fairing = 0, FillHoles = 1, Curvature = 2 };
@@ -31,6 +32,11 @@ struct ParamSpec {
   std::vector<std::string> enumValues;  ///< RichEnum entries, in index order
   std::string label;                    ///< the dialog's field description
   std::string tooltip;
+  /// Int and Float: the accepted range, checked in one place (checkedNumber in filter_run.cpp)
+  /// for the plugin's dialog and for .mlx scripts alike.
+  double minValue = -std::numeric_limits<double>::infinity();
+  double maxValue = std::numeric_limits<double>::infinity();
+  std::string rangeHint;  ///< why the minimum, if it needs saying ("a hole has 3 edges or more")
 };
 
 struct FilterSpec {
@@ -75,4 +81,4 @@ class ParamValues {
   std::map<std::string, double> values_;
 };
 
-}  // namespace elastica::filters
+}  // namespace elastica::app

@@ -1,17 +1,16 @@
-#include <elastica/curvature.h>
-#include <elastica/energy.h>
+#include <elastica/app/choices.h>
+#include <elastica/app/filter_run.h>
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
-#include <elastica/filters/filter_run.h>
-#include <elastica/geometry.h>
 #include <elastica/hole_filling.h>
-#include <elastica/sign_convention.h>
+#include <elastica/mesh_curvature.h>
 #include <elastica/topology.h>
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 
-namespace elastica::filters {
+namespace elastica::app {
 namespace {
 
 std::string number(double x, const char* fmt = "%.6g") {
@@ -20,14 +19,17 @@ std::string number(double x, const char* fmt = "%.6g") {
   return buf;
 }
 
-// The enum value of `name`, checked against its spec (a script may carry any integer).
-int enumValue(const ParamValues& v, const FilterSpec& spec, const std::string& name) {
+// The value of enum parameter `name`: its menu index (a script may carry any integer) looked up
+// in the choices table, which is also where the menu's entries come from.
+template <class E>
+E enumValue(const ParamValues& v, const std::string& name) {
   const int i = v.getEnum(name);
-  const int n = static_cast<int>(spec.param(name)->enumValues.size());
+  const std::vector<Choice<E>>& table = choices<E>();
+  const int n = static_cast<int>(table.size());
   if (i < 0 || i >= n)
     throw InvalidInputError("parameter '" + name + "': enum value " + std::to_string(i) + " is not in 0.." +
                             std::to_string(n - 1));
-  return i;
+  return table[static_cast<std::size_t>(i)].value;
 }
 
 // Builds the topology and rejects what no flow can handle; the message says how to repair it in
@@ -47,24 +49,23 @@ Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices) {
   return topo;
 }
 
-const char* stopText(StopReason s) {
-  switch (s) {
-    case StopReason::Converged: return "converged at the energy plateau";
-    case StopReason::Stalled: return "stalled: no step lowers the energy any more";
-    case StopReason::MaxSteps: return "stopped at maxSteps";
-    case StopReason::MaxSeconds: return "stopped at the time limit";
-    case StopReason::Cancelled: return "cancelled";
-    case StopReason::Diverged: return "diverged";
-  }
-  return "?";
+// The value of number parameter `name`, checked against the range its spec declares.
+double checkedNumber(const ParamValues& v, const FilterSpec& spec, const std::string& name) {
+  const ParamSpec& p = *spec.param(name);
+  const double x = p.type == ParamType::Int ? double(v.getInt(name)) : v.getFloat(name);
+  if (x >= p.minValue && x <= p.maxValue) return x;
+  std::string range = p.maxValue < std::numeric_limits<double>::infinity()
+                          ? "in " + number(p.minValue) + ".." + number(p.maxValue)
+                          : ">= " + number(p.minValue);
+  if (!p.rangeHint.empty()) range += " (" + p.rangeHint + ")";
+  throw InvalidInputError("parameter '" + name + "' must be " + range);
 }
 
 // flow, scheme and maxSteps: the parameters every flow filter has.
 void readFlowParameters(const ParamValues& v, const FilterSpec& spec, FlowOptions& o) {
-  o.flow = static_cast<FlowType>(enumValue(v, spec, "flow"));
-  o.scheme = static_cast<Scheme>(enumValue(v, spec, "scheme"));
-  o.maxSteps = v.getInt("maxSteps");
-  if (o.maxSteps < 0) throw InvalidInputError("parameter 'maxSteps' must be >= 0");
+  o.flow = enumValue<FlowType>(v, "flow");
+  o.scheme = enumValue<Scheme>(v, "scheme");
+  o.maxSteps = static_cast<long long>(checkedNumber(v, spec, "maxSteps"));
 }
 
 // MeshLab's progress from the flow's: the share of maxSteps taken.
@@ -93,14 +94,34 @@ FlowOptions fairingOptions(const ParamValues& v) {
   const FilterSpec spec = filterSpec(FilterId::Fairing, {});
   FlowOptions o;
   readFlowParameters(v, spec, o);
-  o.boundary = static_cast<BoundaryMode>(enumValue(v, spec, "boundary"));
-  o.subdivisionLevels = v.getInt("subdivisionLevels");
-  o.energyTolerance = v.getFloat("energyTolerance");
+  o.boundary = enumValue<BoundaryMode>(v, "boundary");
+  o.subdivisionLevels = static_cast<int>(checkedNumber(v, spec, "subdivisionLevels"));
+  o.energyTolerance = checkedNumber(v, spec, "energyTolerance");
   o.tangentialDrift = v.getBool("tangentialDrift");
-  if (o.subdivisionLevels < 0 || o.subdivisionLevels > 8)
-    throw InvalidInputError("parameter 'subdivisionLevels' must be in 0..8");
-  if (!(o.energyTolerance >= 0)) throw InvalidInputError("parameter 'energyTolerance' must be >= 0");
   return o;
+}
+
+FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, const FlowOptions& opt,
+                         bool outputCurvature) {
+  const bool selected = !selection.empty();
+  FairingResult r;
+  const std::vector<Face> inputFaces = mesh.faces;
+  const int inVertices = mesh.vertexCount();
+  r.report = selected ? fair(mesh, FaceSet::fromFlags(selection), opt) : fair(mesh, opt);
+  const FlowReport& report = r.report;
+  if (report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
+
+  r.connectivityChanged = mesh.faces != inputFaces;
+  r.outputCurvature = outputCurvature;
+  if (outputCurvature) r.curvature = measureCurvature(mesh, {opt.area, opt.curvature});
+  r.log.push_back(std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) + " vertices, " +
+                  std::to_string(report.steps) + " steps in " + number(report.seconds, "%.2f") + " s (" +
+                  labelOf(report.stop) + ")");
+  r.log.push_back("total curvature energy " + number(report.energyInitial, "%.9g") + " -> " +
+                  number(report.energyFinal, "%.9g"));
+  r.mesh = std::move(mesh);
+  if (selected) r.selection = FaceSet(report.regionFaces).flags(r.mesh.faces.size());
+  return r;
 }
 
 FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, const ParamValues& v,
@@ -111,52 +132,32 @@ FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, cons
   if (selected && std::count(selection.begin(), selection.end(), 1) == 0)
     throw InvalidInputError("'Affect only selected faces' is on, but no face is selected");
   opt.progress = flowProgress(progress, opt.maxSteps);
-
-  FairingResult r;
-  const std::vector<Face> inputFaces = mesh.faces;
-  const int inVertices = mesh.vertexCount();
-  const FlowReport report = selected ? fair(mesh, FaceSet::fromFlags(selection), opt) : fair(mesh, opt);
-  if (report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
-
-  r.connectivityChanged = mesh.faces != inputFaces;
-  r.colorByMeanCurvature = v.getBool("colorByMeanCurvature");
-  if (r.colorByMeanCurvature) r.curvature = measureCurvature(mesh, {opt.area, opt.curvature});
-  r.log.push_back(std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) + " vertices, " +
-                  std::to_string(report.steps) + " steps in " + number(report.seconds, "%.2f") + " s (" +
-                  stopText(report.stop) + ")");
-  r.log.push_back("total curvature energy " + number(report.energyInitial, "%.9g") + " -> " +
-                  number(report.energyFinal, "%.9g"));
-  r.mesh = std::move(mesh);
-  if (selected) r.selection = FaceSet(report.regionFaces).flags(r.mesh.faces.size());
-  return r;
+  if (!selected) selection.clear();
+  return runFairing(std::move(mesh), std::move(selection), opt, v.getBool("colorByMeanCurvature"));
 }
 
 HoleFillOptions fillHolesOptions(const ParamValues& v) {
   const FilterSpec spec = filterSpec(FilterId::FillHoles, {});
   HoleFillOptions o;
-  o.maxHoleEdges = v.getInt("MaxHoleSize");
-  if (o.maxHoleEdges < 3) throw InvalidInputError("parameter 'MaxHoleSize' must be >= 3 (a hole has 3 edges or more)");
+  o.maxHoleEdges = static_cast<int>(checkedNumber(v, spec, "MaxHoleSize"));
   readFlowParameters(v, spec, o.flow);
   return o;
 }
 
-FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress& progress) {
-  HoleFillOptions opt = fillHolesOptions(v);
-  checkedTopology(mesh, /*rejectNonManifoldVertices=*/true);
-  opt.flow.progress = flowProgress(progress, opt.flow.maxSteps);
-
+FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outputCurvature) {
   FillHolesResult r;
   r.originalVertices = mesh.vertexCount();
   r.originalFaces = mesh.faceCount();
-  const HoleFillReport report = fillHoles(mesh, opt);
-  r.newFaces.assign(mesh.faces.size(), 0);
-  for (std::size_t f = 0; f < r.newFaces.size(); ++f) r.newFaces[f] = report.isNewFace(static_cast<int>(f));
+  r.report = fillHoles(mesh, opt);
+  r.outputCurvature = outputCurvature;
+  if (outputCurvature) r.curvature = measureCurvature(mesh, {opt.flow.area, opt.flow.curvature});
+  const HoleFillReport& report = r.report;
   for (const HoleReport& h : report.holes) {
     std::string line = "hole of " + std::to_string(h.borderEdges) + " border edges: ";
     if (h.filled)
       line += "filled with " + std::to_string(h.newVertices) + " vertices and " + std::to_string(h.newFaces) +
               " faces; patch energy " + number(h.energyBefore) + " -> " + number(h.energyAfter) + " in " +
-              std::to_string(h.steps) + " steps (" + stopText(h.stop) + ")";
+              std::to_string(h.steps) + " steps (" + labelOf(h.stop) + ")";
     else
       line += "left open";
     if (!h.reason.empty()) line += "; " + h.reason;
@@ -165,41 +166,41 @@ FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress&
   if (!report.welds.empty())
     r.log.push_back("merged " + std::to_string(report.welds.size()) +
                     " pairs of vertex copies at one point where a patch joined their fans");
-  r.welds = report.welds;
   r.log.push_back("filled " + std::to_string(report.filledCount()) + " of " + std::to_string(report.holes.size()) +
                   " holes in " + number(report.seconds, "%.2f") + " s");
   r.mesh = std::move(mesh);
   return r;
 }
 
+FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress& progress) {
+  HoleFillOptions opt = fillHolesOptions(v);
+  checkedTopology(mesh, /*rejectNonManifoldVertices=*/true);
+  opt.flow.progress = flowProgress(progress, opt.flow.maxSteps);
+  return runFillHoles(std::move(mesh), opt);
+}
+
 CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v) {
-  const FilterSpec spec = filterSpec(FilterId::Curvature, {});
-  const VertexArea area = static_cast<VertexArea>(enumValue(v, spec, "area"));
+  CurvatureMeasureOptions opt;
+  opt.area = enumValue<VertexArea>(v, "area");
   const bool lambdaFix = v.getBool("lambdaFix");
+  opt.curvature.h2k = lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
   const Topology topo = checkedTopology(mesh, /*rejectNonManifoldVertices=*/false);
 
   CurvatureResult r;
   if (const int nonManifold = topo.nonManifoldVertexCount(); nonManifold > 0)  // counted per call
     r.log.push_back("warning: " + std::to_string(nonManifold) +
                     " non-manifold vertices; curvature there is not meaningful");
-  const Geometry geo = computeGeometry(topo, mesh.positions, area);
-  CurvatureOptions opt;
-  opt.h2k = lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
-  Curvature c = computeCurvature(topo, geo, mesh.positions, opt);
+  MeshCurvature c = measureCurvature(mesh, opt);
   auto [lo, hi] = std::minmax_element(c.H.begin(), c.H.end());
-  // + 0.0 turns a negative zero into 0 for printing; the reported sign flips min and max.
-  r.log.push_back("mean curvature H (+1/r on a sphere): " + number(reportedMeanCurvature(*hi) + 0.0) + " .. " +
-                  number(reportedMeanCurvature(*lo) + 0.0));
+  // + 0.0 turns a negative zero into 0 for printing.
+  r.log.push_back("mean curvature H (+1/r on a sphere): " + number(*lo + 0.0) + " .. " + number(*hi + 0.0));
   if (lambdaFix)
     r.log.push_back("paper's lambda fix: lambda = " + number(c.lambda) + " on " + std::to_string(c.lambdaVertices) +
                     " vertices");
-  r.log.push_back("total curvature energy E = " + number(totalCurvatureEnergy(topo, geo, c), "%.9g"));
-  // Values leave the core here: the reported sign (+1/r on an outward sphere).
-  const std::vector<double>& H = lambdaFix ? c.Hflow : c.H;
-  r.H.resize(H.size());
-  std::transform(H.begin(), H.end(), r.H.begin(), reportedMeanCurvature);
+  r.log.push_back("total curvature energy E = " + number(c.energy, "%.9g"));
+  r.H = lambdaFix ? std::move(c.Hlambda) : std::move(c.H);
   r.K = std::move(c.K);
   return r;
 }
 
-}  // namespace elastica::filters
+}  // namespace elastica::app

@@ -1,39 +1,59 @@
+#include <elastica/app/choices.h>
+#include <elastica/app/filter_spec.h>
 #include <elastica/errors.h>
-#include <elastica/filters/filter_spec.h>
 #include <elastica/flow.h>
 #include <elastica/hole_filling.h>
 
-namespace elastica::filters {
+namespace elastica::app {
 namespace {
 
 const char* kReference =
     "<br><br>See: <i>S. Yoshizawa, A. G. Belyaev</i>, <b>\"Fair Triangle Mesh Generation with Discrete "
     "Elastica\"</b>, Geometric Modeling and Processing 2002, pp. 119-123.";
 
+ParamSpec param(std::string name, ParamType type, double value, std::string label, std::string tooltip) {
+  ParamSpec p;
+  p.name = std::move(name);
+  p.type = type;
+  p.defaultValue = value;
+  p.label = std::move(label);
+  p.tooltip = std::move(tooltip);
+  return p;
+}
 ParamSpec boolParam(std::string name, bool value, std::string label, std::string tooltip) {
-  return {std::move(name), ParamType::Bool, value ? 1.0 : 0.0, {}, std::move(label), std::move(tooltip)};
+  return param(std::move(name), ParamType::Bool, value ? 1.0 : 0.0, std::move(label), std::move(tooltip));
 }
-ParamSpec intParam(std::string name, int value, std::string label, std::string tooltip) {
-  return {std::move(name), ParamType::Int, double(value), {}, std::move(label), std::move(tooltip)};
+ParamSpec intParam(std::string name, int value, std::string label, std::string tooltip, double lo, double hi,
+                   std::string hint = {}) {
+  ParamSpec p = param(std::move(name), ParamType::Int, double(value), std::move(label), std::move(tooltip));
+  p.minValue = lo;
+  p.maxValue = hi;
+  p.rangeHint = std::move(hint);
+  return p;
 }
-ParamSpec floatParam(std::string name, float value, std::string label, std::string tooltip) {
-  return {std::move(name), ParamType::Float, double(value), {}, std::move(label), std::move(tooltip)};
+ParamSpec floatParam(std::string name, float value, std::string label, std::string tooltip, double lo) {
+  ParamSpec p = param(std::move(name), ParamType::Float, double(value), std::move(label), std::move(tooltip));
+  p.minValue = lo;
+  return p;
 }
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 ParamSpec enumParam(std::string name, int value, std::vector<std::string> values, std::string label,
                     std::string tooltip) {
-  return {std::move(name), ParamType::Enum, double(value), std::move(values), std::move(label), std::move(tooltip)};
+  ParamSpec p = param(std::move(name), ParamType::Enum, double(value), std::move(label), std::move(tooltip));
+  p.enumValues = std::move(values);
+  return p;
 }
 
 // The flow and scheme choices, shared by every filter that runs a flow (index order is the .mlx
 // value: append only).
 ParamSpec flowParam() {
-  return enumParam("flow", 0, {"Elastica", "Laplacian of mean curvature", "Bilaplacian"}, "Flow",
+  return enumParam("flow", 0, labels<FlowType>(), "Flow",
                    "Elastica: F = -Lap H - 2H(H^2-K), converges to elastica (Willmore) surfaces such as round "
                    "spheres. Laplacian of mean curvature: F = -Lap H, keeps the volume, converges to constant mean "
                    "curvature. Bilaplacian: the equal-weight bi-umbrella, the paper's comparison (shrinks).");
 }
 ParamSpec schemeParam(Scheme defaultScheme) {
-  return enumParam("scheme", int(defaultScheme), {"Explicit", "Semi-implicit"}, "Time integration",
+  return enumParam("scheme", indexOf(defaultScheme), labels<Scheme>(), "Time integration",
                    "Explicit: the paper's step tau = A_min^2/150 (the number of steps grows like the square of "
                    "the vertex count). Semi-implicit: implicit in the fourth-order part, adaptive step, far fewer "
                    "steps (Elastica and Laplacian of mean curvature only).");
@@ -41,7 +61,8 @@ ParamSpec schemeParam(Scheme defaultScheme) {
 ParamSpec maxStepsParam() {
   return intParam("maxSteps", int(FlowOptions{}.maxSteps), "Maximum steps",
                   "Upper bound on the number of steps over all stages; the flow normally stops earlier, at the "
-                  "energy plateau.");
+                  "energy plateau.",
+                  0, kUnbounded);
 }
 
 FilterSpec fairing(const MeshFacts& mesh) {
@@ -63,13 +84,15 @@ FilterSpec fairing(const MeshFacts& mesh) {
       maxStepsParam(),
       intParam("subdivisionLevels", 0, "Subdivision levels",
                "Coarse to fine: how many times the mesh is split 1-to-4 at edge midpoints, each time when the "
-               "flow is near steady state (each level has four times the faces)."),
+               "flow is near steady state (each level has four times the faces).",
+               0, 8),
       floatParam("energyTolerance", float(FlowOptions{}.energyTolerance), "Energy tolerance",
                  "Stop when the relative change of the total curvature energy per unit of normalised time falls "
-                 "below this (independent of scale and resolution; smaller is rounder and slower)."),
+                 "below this (independent of scale and resolution; smaller is rounder and slower).",
+                 0),
       boolParam("tangentialDrift", true, "Tangential drift",
                 "Move vertices tangentially (area-weighted bi-umbrella, paper eq. 2.5) to keep triangles even."),
-      enumParam("boundary", 0, {"Fixed", "Slide"}, "Boundary",
+      enumParam("boundary", indexOf(FlowOptions{}.boundary), labels<BoundaryMode>(), "Boundary",
                 "Fixed: boundary vertices and their neighbours stay put (G1 clamp). Slide: boundary vertices "
                 "slide along the original boundary polyline."),
       boolParam("Selected", mesh.selectedFaces > 0, "Affect only selected faces",
@@ -96,7 +119,8 @@ FilterSpec fillHoles() {
   s.params = {
       intParam("MaxHoleSize", defaults.maxHoleEdges, "Max size to be closed",
                "Holes whose boundary has more edges than this are left open (counted as in MeshLab's Close "
-               "Holes)."),
+               "Holes).",
+               3, kUnbounded, "a hole has 3 edges or more"),
       flowParam(),
       schemeParam(defaults.flow.scheme),
       maxStepsParam(),
@@ -121,7 +145,7 @@ FilterSpec curvature() {
       boolParam("lambdaFix", false, "Paper's lambda fix",
                 "Where H^2 < K (impossible on smooth surfaces, common on meshes), rescale H by the paper's "
                 "lambda (guarded: lambda >= 0.5)."),
-      enumParam("area", 0, {"Mixed", "Barycentric"}, "Vertex area",
+      enumParam("area", indexOf(VertexArea::Mixed), labels<VertexArea>(), "Vertex area",
                 "Mixed: Meyer et al.'s mixed Voronoi area (H and K converge under refinement). Barycentric: the "
                 "paper's A/3 (H off by up to ~15 % at irregular vertices)."),
   };
@@ -179,4 +203,4 @@ int ParamValues::getInt(const std::string& name) const { return static_cast<int>
 double ParamValues::getFloat(const std::string& name) const { return get(name); }
 int ParamValues::getEnum(const std::string& name) const { return static_cast<int>(get(name)); }
 
-}  // namespace elastica::filters
+}  // namespace elastica::app

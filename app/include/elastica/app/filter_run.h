@@ -1,10 +1,12 @@
-// Running a filter: parameter values → core options → the core, on a TriMesh copy. The
-// vcglib-facing half (copying in and writing back) is in filter_apply.h; this half is plain C++,
-// so its numerics are the same whoever calls it (the MeshLab plugin or `elastica run`).
+// Running a job: core options → the core, on a TriMesh copy, with what a face needs afterwards
+// (the write-back decision, the output curvature, summary lines); and, for the MeshLab filters
+// and .mlx scripts, parameter values → core options first. The vcglib-facing half (copying in and
+// writing back) is in filter_apply.h; this half is plain C++, so its numerics are the same
+// whoever calls it (the `elastica` command, the MeshLab plugin or `elastica run`).
 #pragma once
 
 #include <elastica/mesh_curvature.h>
-#include <elastica/filters/filter_spec.h>
+#include <elastica/app/filter_spec.h>
 #include <elastica/flow.h>
 #include <elastica/hole_filling.h>
 #include <elastica/types.h>
@@ -14,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace elastica::filters {
+namespace elastica::app {
 
 /// Progress of a long filter: a percentage and a line of text. Returning false cancels.
 using Progress = std::function<bool(int percent, const std::string& what)>;
@@ -36,10 +38,19 @@ struct FairingResult {
   TriMesh mesh;                          ///< the faired mesh (subdivided if asked)
   std::vector<std::uint8_t> selection;   ///< the face selection, refined with the mesh (if one was given)
   bool connectivityChanged = false;      ///< subdivided or flipped: write the whole mesh back
-  bool colorByMeanCurvature = false;
-  MeshCurvature curvature;               ///< of the result, when colorByMeanCurvature
+  bool outputCurvature = false;          ///< `curvature` holds the result's H and K
+  MeshCurvature curvature;               ///< of the result, when outputCurvature
+  FlowReport report;
   std::vector<std::string> log;          ///< summary lines for the user
 };
+
+/// Fairs `mesh` with `opt`: the whole mesh if `selection` is empty, else the faces whose byte is
+/// non-zero (one per face). With `outputCurvature`, also measures the result (opt.area and
+/// opt.curvature). The one fairing path of every face.
+/// @throws InvalidInputError (nothing can move, bad options, ...), FlowDivergedError (with the
+///         report so far), Error (the progress callback cancelled).
+FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, const FlowOptions& opt,
+                         bool outputCurvature);
 
 /// Fairs `mesh` as "Discrete Elastica Fairing" with values `v` (`selection`: one byte per face,
 /// used when the Selected parameter is on).
@@ -57,10 +68,16 @@ HoleFillOptions fillHolesOptions(const ParamValues& v);
 struct FillHolesResult {
   TriMesh mesh;
   int originalVertices = 0, originalFaces = 0;
-  std::vector<std::uint8_t> newFaces;  ///< 1 on new faces
-  std::vector<PinchWeld> welds;        ///< copies of a point merged (HoleFillReport::welds)
+  HoleFillReport report;               ///< per hole; report.isNewFace(f); report.welds
+  bool outputCurvature = false;        ///< `curvature` holds the result's H and K
+  MeshCurvature curvature;             ///< of the result, when outputCurvature
   std::vector<std::string> log;        ///< one line per hole, and a total
 };
+
+/// Fills the holes of `mesh` with `opt` (with `outputCurvature`, also measures the result with
+/// opt.flow.area and opt.flow.curvature). The one hole-filling path of every face.
+/// @throws InvalidInputError (non-manifold edges, bad options).
+FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outputCurvature = false);
 
 /// Fills the holes of `mesh` as "Fill Holes with Discrete Elastica" with values `v`.
 /// @throws InvalidInputError (non-manifold or inconsistently oriented input, bad parameters).
@@ -76,4 +93,4 @@ struct CurvatureResult {
 /// @throws InvalidInputError (non-manifold edges, inconsistent orientation, bad parameters).
 CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v);
 
-}  // namespace elastica::filters
+}  // namespace elastica::app

@@ -1,0 +1,96 @@
+// Applying a filter to a vcglib mesh (MeshLab's float CMeshO in the plugin, the double VcgMesh in
+// `elastica run`): copy into a TriMesh, run (filter_run.h), and write back only on success, so a
+// failing filter leaves the mesh exactly as it was.
+#pragma once
+
+#include <elastica/app/filter_run.h>
+#include <elastica/vcg_adapter.h>
+
+#include <vcg/complex/algorithms/update/bounding.h>
+#include <vcg/complex/algorithms/update/normal.h>
+#include <vcg/complex/algorithms/update/selection.h>
+
+namespace elastica::app {
+
+/// The facts the defaults depend on (selected live faces).
+template <class VcgMeshT>
+MeshFacts meshFacts(const VcgMeshT& m) {
+  MeshFacts facts;
+  for (const auto& f : m.face)
+    if (!f.IsD() && f.IsS()) ++facts.selectedFaces;
+  return facts;
+}
+
+template <class VcgMeshT>
+void updateBoxAndNormals(VcgMeshT& m) {
+  vcg::tri::UpdateBounding<VcgMeshT>::Box(m);
+  vcg::tri::UpdateNormal<VcgMeshT>::PerVertexNormalizedPerFaceNormalized(m);
+}
+
+/// The face selection of `m`: one byte per live face, 1 where selected.
+template <class VcgMeshT>
+std::vector<std::uint8_t> faceSelection(const VcgMeshT& m) {
+  std::vector<std::uint8_t> selection;
+  for (const auto& f : m.face)
+    if (!f.IsD()) selection.push_back(f.IsS() ? 1 : 0);
+  return selection;
+}
+
+/// Writes a fairing result back into `m`, the mesh it was copied from: only the positions when the
+/// connectivity is unchanged (every other attribute of the input stays), else the whole mesh with
+/// the refined selection. (The curvature, if the result carries it, is the caller's to store:
+/// storeCurvature for MeshLab's attributes, or a file writer.)
+template <class VcgMeshT>
+void writeBack(const FairingResult& r, VcgMeshT& m) {
+  if (!r.connectivityChanged) {
+    writePositions(m, r.mesh.positions);
+  } else {
+    fromTriMesh(r.mesh, m);
+    for (size_t f = 0; f < r.selection.size(); ++f)
+      if (r.selection[f]) m.face[f].SetS();
+    vcg::tri::UpdateSelection<VcgMeshT>::VertexFromFaceStrict(m);
+  }
+  updateBoxAndNormals(m);
+}
+
+/// Writes a hole-filling result back into `m`, the mesh it was copied from: the new vertices and
+/// faces are appended and the original ones keep their attributes (copies of a point merged as
+/// the report says). With `selectNew`, only the new faces are selected afterwards, as MeshLab's
+/// Close Holes does. (The curvature, if the result carries it, is the caller's to store.)
+template <class VcgMeshT>
+void writeBack(const FillHolesResult& r, VcgMeshT& m, bool selectNew) {
+  // Compacting makes vcg indices the TriMesh indices (toTriMesh skips deleted elements).
+  vcg::tri::Allocator<VcgMeshT>::CompactEveryVector(m);
+  applyWelds(r.report.welds, m);
+  if (!appendNewElements(r.mesh, m)) throw Error("fill: the mesh changed under the filter; nothing written");
+  if (selectNew) {
+    vcg::tri::UpdateSelection<VcgMeshT>::FaceClear(m);
+    for (size_t f = 0; f < m.face.size(); ++f)
+      if (r.report.isNewFace(static_cast<int>(f))) m.face[f].SetS();
+    vcg::tri::UpdateSelection<VcgMeshT>::VertexFromFaceStrict(m);
+  }
+  updateBoxAndNormals(m);
+}
+
+/// Runs filter `id` with values `v` on `m`. Returns summary lines for the user.
+/// @throws elastica::Error (and std::bad_alloc) with `m` unchanged.
+template <class VcgMeshT>
+std::vector<std::string> applyFilter(FilterId id, VcgMeshT& m, const ParamValues& v, const Progress& progress) {
+  if (id == FilterId::Curvature) {
+    CurvatureResult r = runCurvature(toTriMesh(m), v);
+    storeCurvature(m, r.H, r.K);
+    return std::move(r.log);
+  }
+  if (id == FilterId::FillHoles) {
+    FillHolesResult r = runFillHoles(toTriMesh(m), v, progress);
+    writeBack(r, m, v.getBool("NewFaceSelected"));
+    return std::move(r.log);
+  }
+  const bool selected = v.getBool("Selected");
+  FairingResult r = runFairing(toTriMesh(m), selected ? faceSelection(m) : std::vector<std::uint8_t>{}, v, progress);
+  writeBack(r, m);
+  if (r.outputCurvature) storeCurvature(m, r.curvature.H, r.curvature.K);
+  return std::move(r.log);
+}
+
+}  // namespace elastica::app
