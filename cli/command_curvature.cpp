@@ -4,8 +4,8 @@
 #include "mesh_files.h"
 
 #include <elastica/app/choices.h>
+#include <elastica/app/filter_run.h>
 #include <elastica/errors.h>
-#include <elastica/mesh_curvature.h>
 #include <elastica/vcg_adapter.h>
 
 #include <algorithm>
@@ -32,25 +32,15 @@ void runCurvature(const CurvatureArgs& a) {
   CurvatureMeasureOptions opt;
   opt.area = a.area;
   opt.curvature.h2k = a.lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
-  const MeshCurvature c = measureCurvature(mesh, opt);
+  const app::CurvatureResult r = app::runCurvature(mesh, opt);
+  const MeshCurvature& c = r.curvature;
 
-  writeCurvaturePly(a.output, vm, a.lambdaFix ? c.Hlambda : c.H, c.K, a.ascii, /*color=*/true);
+  writeCurvaturePly(a.output, vm, r.outputH(), c.K, a.ascii, /*color=*/true);
 
-  auto [hmin, hmax] = std::minmax_element(c.H.begin(), c.H.end());
   std::printf("%s: %s, %s, %s, Euler characteristic %d\n", a.input.c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
               plural(mesh.faceCount(), "face").c_str(), c.boundaryEdges ? "with boundary" : "closed",
               c.eulerCharacteristic);
-  // + 0.0 turns a negative zero into 0 for printing.
-  std::printf("mean curvature H (+1/r on a sphere): %.6g .. %.6g\n", *hmin + 0.0, *hmax + 0.0);
-  if (a.lambdaFix)
-    std::printf("paper's lambda fix: lambda = %.6g on %zu vertices (H written is H/lambda there)\n", c.lambda,
-                c.lambdaVertices);
-  const DegeneracyCounts& d = c.degenerate;
-  if (d.total() > 0)
-    std::printf("degenerate, given zero weight: %zu zero-area faces, %zu zero-length edges, %zu vertices without "
-                "area, %zu isolated vertices\n",
-                d.zeroAreaFaces, d.zeroLengthEdges, d.zeroAreaVertices, d.isolatedVertices);
-  std::printf("total curvature energy E = %.9g\n", c.energy);
+  for (const std::string& line : r.log) std::printf("%s\n", line.c_str());
   std::printf("wrote %s\n", a.output.c_str());
 }
 

@@ -127,7 +127,7 @@ void addFillCommand(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")
       ->capture_default_str()
-      ->check(CLI::Range(3, 100000));
+      ->check(parameterRange(app::FilterId::FillHoles, "MaxHoleSize"));
   cmd->add_option("--stop-after", args->fill.stopAfter,
                   "triangulation, refinement, biharmonic (CGAL-like fairing) or flow (default)")
       ->transform(CLI::CheckedTransformer(app::nameMap<FillStage>(), CLI::ignore_case));

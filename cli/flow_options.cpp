@@ -1,8 +1,25 @@
 #include "flow_options.h"
 
 #include <elastica/app/choices.h>
+#include <elastica/app/filter_spec.h>
+
+#include <limits>
 
 namespace elastica::cli {
+
+CLI::Validator parameterRange(app::FilterId filter, const std::string& parameter) {
+  const app::ParamSpec* p = app::filterSpec(filter, {}).param(parameter);
+  const double lo = p->minValue, hi = p->maxValue;
+  auto str = [](double x) { return CLI::detail::to_string(x); };
+  const std::string range = hi < std::numeric_limits<double>::infinity() ? "in " + str(lo) + ".." + str(hi) : ">= " + str(lo);
+  return CLI::Validator(
+      [=](std::string& s) -> std::string {
+        double x = 0;
+        if (!CLI::detail::lexical_cast(s, x) || !(x >= lo && x <= hi)) return "Value " + s + " is not " + range;
+        return {};
+      },
+      range);
+}
 
 void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
   cmd.add_option("--flow", opt.flow,
@@ -11,12 +28,14 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
   cmd.add_option("--scheme", opt.scheme,
                  "explicit (the paper's step; fair's default) or semi-implicit (adaptive, implicit in the 4th-order part; fill's default)")
       ->transform(CLI::CheckedTransformer(app::nameMap<Scheme>(), CLI::ignore_case));
-  cmd.add_option("--max-steps", opt.maxSteps, "step limit over all stages")->capture_default_str()->check(CLI::NonNegativeNumber);
+  cmd.add_option("--max-steps", opt.maxSteps, "step limit over all stages")
+      ->capture_default_str()
+      ->check(parameterRange(app::FilterId::Fairing, "maxSteps"));
   cmd.add_option("--max-seconds", opt.maxSeconds, "wall-time limit (0: none)")->check(CLI::NonNegativeNumber);
   cmd.add_option("--energy-tol", opt.energyTolerance,
                  "stop when the relative energy change per unit of normalised time t/A^2 is below this")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(parameterRange(app::FilterId::Fairing, "energyTolerance"));
   cmd.add_option("--shape-tol", opt.shapeTolerance,
                  "semi-implicit: also stop once a step at the scale of the moving region moves no vertex along its "
                  "normal by more than this times the mean edge length (fill's default 1e-3; fair's 0: off)")
@@ -34,7 +53,7 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
 void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt) {
   cmd.add_option("--subdivide", opt.subdivisionLevels,
                  "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state")
-      ->check(CLI::Range(0, 8));
+      ->check(parameterRange(app::FilterId::Fairing, "subdivisionLevels"));
   cmd.add_option("--target-edge", opt.targetEdgeLength, "stop subdividing once the mean edge length is at most this")
       ->check(CLI::NonNegativeNumber);
   cmd.add_flag("--remesh", opt.flipEdges, "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check");

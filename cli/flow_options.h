@@ -2,11 +2,16 @@
 // they fill one FlowOptions, the same struct the MeshLab plugin fills from its dialog.
 #pragma once
 
+#include <elastica/app/filter_spec.h>
 #include <elastica/flow.h>
 
 #include <CLI/CLI.hpp>
 
 namespace elastica::cli {
+
+/// A check of a number against the range the application layer declares for a filter parameter
+/// (app/filter_spec.h), so a flag and its MeshLab parameter accept the same values.
+CLI::Validator parameterRange(app::FilterId filter, const std::string& parameter);
 
 /// Registers what every flow run honours: --flow, --scheme, --max-steps, --max-seconds,
 /// --energy-tol, --shape-tol, --no-tangential, --h2k, --area and --step-factor, writing into `opt`.

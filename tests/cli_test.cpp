@@ -359,3 +359,26 @@ TEST(Cli, FillRejectsTheOptionsItDoesNotHonour) {
 }
 
 }  // namespace elastica
+
+namespace elastica {
+
+// A flag and its MeshLab parameter accept the same values: the range is the application layer's
+// (app/filter_spec.h), e.g. Subdivision levels 0..8 and Max size to be closed >= 3.
+TEST(Cli, FlagsCheckTheParametersRanges) {
+  ScratchDir dir("cli-ranges");
+  const std::string bunny = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";
+  const struct {
+    std::string args, message;
+  } cases[] = {{"fair " + bunny + " --subdivide 9", "--subdivide: Value 9 is not in 0..8"},
+               {"fair " + bunny + " --max-steps -1", "--max-steps: Value -1 is not >= 0"},
+               {"fair " + bunny + " --energy-tol nan", "--energy-tol: Value nan is not >= 0"},
+               {"fill " + bunny + " --max-hole-edges 2", "--max-hole-edges: Value 2 is not >= 3"}};
+  for (const auto& c : cases) {
+    const CommandResult r = runElastica(c.args + " -o " + dir.file("out.ply"));
+    EXPECT_EQ(r.exitCode, 2) << c.args;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << ": " << r.output;
+    EXPECT_FALSE(std::filesystem::exists(dir.file("out.ply"))) << c.args;
+  }
+}
+
+}  // namespace elastica

@@ -179,27 +179,37 @@ FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress&
   return runFillHoles(std::move(mesh), opt);
 }
 
+CurvatureResult runCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt) {
+  CurvatureResult r;
+  r.curvature = measureCurvature(mesh, opt);
+  r.lambdaFix = opt.curvature.h2k == H2KTreatment::PaperLambda;
+  const MeshCurvature& c = r.curvature;
+  auto [lo, hi] = std::minmax_element(c.H.begin(), c.H.end());
+  // + 0.0 turns a negative zero into 0 for printing.
+  if (!c.H.empty())
+    r.log.push_back("mean curvature H (+1/r on a sphere): " + number(*lo + 0.0) + " .. " + number(*hi + 0.0));
+  if (r.lambdaFix)
+    r.log.push_back("paper's lambda fix: lambda = " + number(c.lambda) + " on " + std::to_string(c.lambdaVertices) +
+                    " vertices (H written is H/lambda there)");
+  const DegeneracyCounts& d = c.degenerate;
+  if (d.total() > 0)
+    r.log.push_back("degenerate, given zero weight: " + std::to_string(d.zeroAreaFaces) + " zero-area faces, " +
+                    std::to_string(d.zeroLengthEdges) + " zero-length edges, " + std::to_string(d.zeroAreaVertices) +
+                    " vertices without area, " + std::to_string(d.isolatedVertices) + " isolated vertices");
+  r.log.push_back("total curvature energy E = " + number(c.energy, "%.9g"));
+  return r;
+}
+
 CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v) {
   CurvatureMeasureOptions opt;
   opt.area = enumValue<VertexArea>(v, "area");
-  const bool lambdaFix = v.getBool("lambdaFix");
-  opt.curvature.h2k = lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
+  opt.curvature.h2k = v.getBool("lambdaFix") ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
   const Topology topo = checkedTopology(mesh, /*rejectNonManifoldVertices=*/false);
-
-  CurvatureResult r;
-  if (const int nonManifold = topo.nonManifoldVertexCount(); nonManifold > 0)  // counted per call
-    r.log.push_back("warning: " + std::to_string(nonManifold) +
-                    " non-manifold vertices; curvature there is not meaningful");
-  MeshCurvature c = measureCurvature(mesh, opt);
-  auto [lo, hi] = std::minmax_element(c.H.begin(), c.H.end());
-  // + 0.0 turns a negative zero into 0 for printing.
-  r.log.push_back("mean curvature H (+1/r on a sphere): " + number(*lo + 0.0) + " .. " + number(*hi + 0.0));
-  if (lambdaFix)
-    r.log.push_back("paper's lambda fix: lambda = " + number(c.lambda) + " on " + std::to_string(c.lambdaVertices) +
-                    " vertices");
-  r.log.push_back("total curvature energy E = " + number(c.energy, "%.9g"));
-  r.H = lambdaFix ? std::move(c.Hlambda) : std::move(c.H);
-  r.K = std::move(c.K);
+  const int nonManifold = topo.nonManifoldVertexCount();  // counted per call
+  CurvatureResult r = runCurvature(mesh, opt);
+  if (nonManifold > 0)
+    r.log.insert(r.log.begin(), "warning: " + std::to_string(nonManifold) +
+                                    " non-manifold vertices; curvature there is not meaningful");
   return r;
 }
 

@@ -78,7 +78,7 @@ template <class VcgMeshT>
 std::vector<std::string> applyFilter(FilterId id, VcgMeshT& m, const ParamValues& v, const Progress& progress) {
   if (id == FilterId::Curvature) {
     CurvatureResult r = runCurvature(toTriMesh(m), v);
-    storeCurvature(m, r.H, r.K);
+    storeCurvature(m, r.outputH(), r.curvature.K);
     return std::move(r.log);
   }
   if (id == FilterId::FillHoles) {

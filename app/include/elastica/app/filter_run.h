@@ -83,13 +83,21 @@ FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outp
 /// @throws InvalidInputError (non-manifold or inconsistently oriented input, bad parameters).
 FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress& progress);
 
-/// What "Discrete Elastica Curvature" computed.
+/// What a curvature measurement produced.
 struct CurvatureResult {
-  std::vector<double> H;  ///< the reported sign (+1/r on a sphere); H/λ where the λ fix applied
-  std::vector<double> K;
-  std::vector<std::string> log;
+  MeshCurvature curvature;
+  bool lambdaFix = false;
+  std::vector<std::string> log;  ///< H's range, λ, degenerate elements, the energy
+
+  /// The H a face outputs: H/λ where the paper's λ fix applied, else H (reported sign).
+  const std::vector<double>& outputH() const { return lambdaFix ? curvature.Hlambda : curvature.H; }
 };
 
+/// Measures `mesh` with `opt`. The one curvature path of every face.
+/// @throws InvalidInputError (non-manifold edges).
+CurvatureResult runCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt);
+
+/// Measures `mesh` as "Discrete Elastica Curvature" with values `v`.
 /// @throws InvalidInputError (non-manifold edges, inconsistent orientation, bad parameters).
 CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v);
 
