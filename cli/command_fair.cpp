@@ -8,6 +8,7 @@
 
 #include <elastica/app/choices.h>
 #include <elastica/app/filter_apply.h>
+#include <elastica/app/reports.h>
 #include <elastica/errors.h>
 
 #include <algorithm>
@@ -49,11 +50,6 @@ void runFair(FairArgs& a) {
     selection = readFaceIndexFile(a.selectedFaces, inFaces);
   }
 
-  auto describe = [&](nlohmann::json j) {
-    j["input"] = {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}};
-    j["flow"] = app::nameOf(a.flow.flow);
-    return j;
-  };
   a.flow.progress = terminalProgress("fair", a.progress);
   app::FairingResult result;
   try {
@@ -62,7 +58,8 @@ void runFair(FairArgs& a) {
     endProgressLine();
     // The mesh is not written, but the report tells how far the run got and why it stopped.
     if (!a.report.empty()) {
-      nlohmann::json j = describe(toJson(e.report()));
+      nlohmann::json j = app::fairingReport(e.report(), a.flow, inVertices, inFaces);
+      j["input"]["file"] = a.input;
       j["error"] = e.what();
       writeJson(a.report, j);
     }
@@ -91,9 +88,9 @@ void runFair(FairArgs& a) {
   std::printf("wrote %s\n", a.output.c_str());
 
   if (!a.report.empty()) {
-    nlohmann::json j = describe(toJson(report));
-    j["output"] = {{"file", a.output}, {"vertices", mesh.vertexCount()}, {"faces", mesh.faceCount()}};
-    j["energy_output"] = curv.energy;  // whole mesh, independent recomputation
+    nlohmann::json j = app::fairingReport(report, a.flow, inVertices, inFaces, &result);
+    j["input"]["file"] = a.input;
+    j["output"]["file"] = a.output;
     writeJson(a.report, j);
     std::printf("wrote %s\n", a.report.c_str());
   }

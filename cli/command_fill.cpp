@@ -8,6 +8,7 @@
 
 #include <elastica/app/choices.h>
 #include <elastica/app/filter_apply.h>
+#include <elastica/app/reports.h>
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
 
@@ -22,21 +23,6 @@ struct FillArgs {
   bool ascii = false, color = false, progress = false;
   HoleFillOptions fill;
 };
-
-nlohmann::json toJson(const HoleReport& h) {
-  nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}};
-  if (!h.reason.empty()) j["reason"] = h.reason;
-  if (!h.filled) return j;
-  j["new_vertices"] = h.newVertices;
-  j["new_faces"] = h.newFaces;
-  j["energy_before"] = h.energyBefore;
-  j["energy_after"] = h.energyAfter;
-  j["steps"] = h.steps;
-  j["stop"] = app::nameOf(h.stop);
-  j["min_angle_degrees"] = h.minAngleDegrees;
-  j["seconds"] = h.seconds;
-  return j;
-}
 
 void runFill(FillArgs& a) {
   io::checkOutputPath(a.output, a.input);
@@ -96,16 +82,9 @@ void runFill(FillArgs& a) {
   std::printf("wrote %s (new faces selected and flagged by the face property elastica_new)\n", a.output.c_str());
 
   if (!a.report.empty()) {
-    nlohmann::json j{{"input", {{"file", a.input}, {"vertices", inVertices}, {"faces", inFaces}}},
-                     {"output", {{"file", a.output}, {"vertices", mesh.vertexCount()}, {"faces", mesh.faceCount()}}},
-                     {"stop_after", app::nameOf(a.fill.stopAfter)},
-                     {"max_hole_edges", a.fill.maxHoleEdges},
-                     {"filled", report.filledCount()},
-                     {"skipped", skipped},
-                     {"vertex_copies_merged", report.welds.size()},
-                     {"seconds", report.seconds},
-                     {"holes", nlohmann::json::array()}};
-    for (const HoleReport& h : report.holes) j["holes"].push_back(toJson(h));
+    nlohmann::json j = app::fillingReport(result, a.fill);
+    j["input"]["file"] = a.input;
+    j["output"]["file"] = a.output;
     writeJson(a.report, j);
     std::printf("wrote %s\n", a.report.c_str());
   }

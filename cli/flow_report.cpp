@@ -1,6 +1,5 @@
 #include "flow_report.h"
 
-#include <elastica/app/choices.h>
 #include <elastica/errors.h>
 #include <elastica/io/atomic_file.h>
 
@@ -15,25 +14,6 @@ namespace {
 bool gLineDrawn = false;
 
 }  // namespace
-
-nlohmann::json toJson(const FlowReport& r) {
-  nlohmann::json j;
-  j["energy_initial"] = r.energyInitial;
-  j["energy_final"] = r.energyFinal;
-  j["steps"] = r.steps;
-  j["rejected_steps"] = r.rejectedSteps;
-  j["seconds"] = r.seconds;
-  j["stop"] = app::nameOf(r.stop);
-  j["min_lambda"] = r.minLambda;
-  j["stages"] = nlohmann::json::array();
-  for (const FlowStage& s : r.stages)
-    j["stages"].push_back({{"level", s.level}, {"vertices", s.vertices}, {"faces", s.faces}, {"steps", s.steps},
-                           {"energy", s.energy}, {"seconds", s.seconds}});
-  j["energy_history"] = nlohmann::json::array();
-  for (const EnergySample& h : r.history)
-    j["energy_history"].push_back({{"step", h.step}, {"time", h.time}, {"seconds", h.seconds}, {"energy", h.energy}});
-  return j;
-}
 
 void writeJson(const std::string& path, const nlohmann::json& j) {
   io::writeAtomically(path, [&](const std::string& tmp) {

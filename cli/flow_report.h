@@ -1,4 +1,4 @@
-// The JSON report of a flow run (--report), and the live progress line on a terminal.
+// Writing a JSON report (--report; app/reports.h builds it), and the live progress line on a terminal.
 #pragma once
 
 #include <elastica/flow.h>
@@ -9,10 +9,6 @@
 #include <string>
 
 namespace elastica::cli {
-
-/// energy_initial, energy_final, steps, rejected_steps, seconds, stop, min_lambda, stages[],
-/// energy_history[].
-nlohmann::json toJson(const FlowReport& r);
 
 /// Writes `j` to `path` atomically. @throws IoError.
 void writeJson(const std::string& path, const nlohmann::json& j);

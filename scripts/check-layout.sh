@@ -26,11 +26,11 @@ named() {  # a file is named by its full name or its stem
   local f=$1 stem=${1%.*}
   [[ "$words" == *" $f "* || "$words" == *" $stem "* ]]
 }
-for d in $(git ls-files | cut -d/ -f1 | sort -u); do
+for d in $(git ls-files --cached --others --exclude-standard | cut -d/ -f1 | sort -u); do
   [[ -d "$d" && "$d" != .* ]] || continue
   [[ "$words" == *" $d/ "* ]] || missing "top-level folder $d/ is not in the README's layout"
 done
-for d in $(git ls-files vcg_core | cut -d/ -f2-3 | grep / | sort -u); do
+for d in $(git ls-files --cached --others --exclude-standard vcg_core | cut -d/ -f2-3 | grep / | sort -u); do
   [[ -d "vcg_core/$d" ]] || continue
   [[ "$block" == *"$d/"* || "$block" == *"${d#*/}/"* ]] || missing "folder vcg_core/$d/ is not in the README's layout"
 done

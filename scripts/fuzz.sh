@@ -25,7 +25,7 @@ build=build-fuzz
 
 if [[ ! -f $build/CMakeCache.txt ]]; then
   CC=clang CXX=clang++ cmake -S . -B $build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DELASTICA_BUILD_FUZZERS=ON \
-    -DELASTICA_BUILD_PLUGIN=OFF -DELASTICA_BUILD_CLI=OFF -DELASTICA_BUILD_TESTS=OFF -DELASTICA_BUILD_BENCH=OFF >/dev/null
+    -DELASTICA_BUILD_PLUGIN=OFF -DELASTICA_BUILD_CLI=OFF -DELASTICA_BUILD_TESTS=OFF -DELASTICA_BUILD_BENCH=OFF -DELASTICA_BUILD_PYTHON=OFF >/dev/null
 fi
 cmake --build $build -j"$(nproc)" --target "${targets[@]}" >/dev/null
 

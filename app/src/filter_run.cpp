@@ -32,21 +32,8 @@ E enumValue(const ParamValues& v, const std::string& name) {
   return table[static_cast<std::size_t>(i)].value;
 }
 
-// Builds the topology and rejects what no flow can handle; the message says how to repair it in
-// MeshLab. (Non-manifold edges are rejected by Topology itself.)
 Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices) {
-  if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");
-  Topology topo(mesh.vertexCount(), mesh.faces);
-  if (topo.inconsistentEdgeCount() > 0)
-    throw InvalidInputError("faces are not consistently oriented (" + std::to_string(topo.inconsistentEdgeCount()) +
-                            " edges traversed the same way by both faces); re-orient them first: "
-                            "Filters > Normals > Re-Orient all faces coherently");
-  const int nonManifold = rejectNonManifoldVertices ? topo.nonManifoldVertexCount() : 0;  // counted per call
-  if (nonManifold > 0)
-    throw InvalidInputError(std::to_string(nonManifold) +
-                            " non-manifold vertices (several fans of faces meet there); split them first: "
-                            "Filters > Cleaning and Repairing > Repair non Manifold Vertices by splitting");
-  return topo;
+  return checkedTopology(mesh, rejectNonManifoldVertices, RepairHints::MeshLab);
 }
 
 // The value of number parameter `name`, checked against the range its spec declares.
@@ -80,6 +67,23 @@ std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, 
 }
 
 }  // namespace
+
+Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices, RepairHints hints) {
+  const bool meshlab = hints == RepairHints::MeshLab;
+  if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");
+  Topology topo(mesh.vertexCount(), mesh.faces);
+  if (topo.inconsistentEdgeCount() > 0)
+    throw InvalidInputError("faces are not consistently oriented (" + std::to_string(topo.inconsistentEdgeCount()) +
+                            " edges traversed the same way by both faces)" +
+                            (meshlab ? "; re-orient them first: Filters > Normals > Re-Orient all faces coherently" : ""));
+  const int nonManifold = rejectNonManifoldVertices ? topo.nonManifoldVertexCount() : 0;  // counted per call
+  if (nonManifold > 0)
+    throw InvalidInputError(std::to_string(nonManifold) + " non-manifold vertices (several fans of faces meet there)" +
+                            (meshlab ? "; split them first: Filters > Cleaning and Repairing > Repair non Manifold "
+                                       "Vertices by splitting"
+                                     : ""));
+  return topo;
+}
 
 FilterOutputs filterOutputs(FilterId id, const ParamValues& v) {
   switch (id) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <elastica/mesh_curvature.h>
+#include <elastica/topology.h>
 #include <elastica/app/filter_spec.h>
 #include <elastica/flow.h>
 #include <elastica/hole_filling.h>
@@ -20,6 +21,15 @@ namespace elastica::app {
 
 /// Progress of a long filter: a percentage and a line of text. Returning false cancels.
 using Progress = std::function<bool(int percent, const std::string& what)>;
+
+/// Whether an input error names MeshLab's repair filters.
+enum class RepairHints { None, MeshLab };
+
+/// Builds the topology of `mesh` and rejects what no job can handle: no faces, non-manifold edges
+/// (Topology), inconsistently oriented faces and, if asked, non-manifold vertices.
+/// @throws InvalidInputError saying what is wrong (and, with RepairHints::MeshLab, how to repair it
+///         in MeshLab).
+Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices, RepairHints hints);
 
 /// What a filter leaves on the mesh besides positions and faces (for the data MeshLab must keep,
 /// and what `elastica run` writes).

@@ -1,0 +1,32 @@
+// The JSON reports of the jobs: what `elastica fair|fill --report R.json` writes and what the
+// Python module returns as a dict, built in one place. Keys are snake_case; words (stop reasons,
+// flows, stages) come from choices.h. A face adds its own entries (the CLI: file names).
+#pragma once
+
+#include <elastica/app/filter_run.h>
+#include <elastica/flow.h>
+#include <elastica/hole_filling.h>
+
+#include <nlohmann/json.hpp>
+
+namespace elastica::app {
+
+/// energy_initial, energy_final, steps, rejected_steps, seconds, stop, min_lambda, stages[],
+/// energy_history[].
+nlohmann::json toJson(const FlowReport& r);
+
+/// One hole: border_edges, filled, reason, and if filled new_vertices, new_faces, energy_before,
+/// energy_after, steps, stop, min_angle_degrees, seconds.
+nlohmann::json toJson(const HoleReport& h);
+
+/// A fairing run: the flow report, "flow", "input" {vertices, faces} and, for a finished run
+/// (`result` given), "output" {vertices, faces} and "energy_output" (the whole output mesh's E,
+/// recomputed independently of the flow) when the result carries its curvature.
+nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int inputVertices, int inputFaces,
+                             const FairingResult* result = nullptr);
+
+/// A hole-filling run: "input", "output", stop_after, max_hole_edges, filled, skipped,
+/// vertex_copies_merged, seconds, holes[].
+nlohmann::json fillingReport(const FillHolesResult& r, const HoleFillOptions& opt);
+
+}  // namespace elastica::app

@@ -1,0 +1,68 @@
+#include <elastica/app/choices.h>
+#include <elastica/app/reports.h>
+
+namespace elastica::app {
+
+nlohmann::json toJson(const FlowReport& r) {
+  nlohmann::json j;
+  j["energy_initial"] = r.energyInitial;
+  j["energy_final"] = r.energyFinal;
+  j["steps"] = r.steps;
+  j["rejected_steps"] = r.rejectedSteps;
+  j["seconds"] = r.seconds;
+  j["stop"] = nameOf(r.stop);
+  j["min_lambda"] = r.minLambda;
+  j["stages"] = nlohmann::json::array();
+  for (const FlowStage& s : r.stages)
+    j["stages"].push_back({{"level", s.level}, {"vertices", s.vertices}, {"faces", s.faces}, {"steps", s.steps},
+                           {"energy", s.energy}, {"seconds", s.seconds}});
+  j["energy_history"] = nlohmann::json::array();
+  for (const EnergySample& h : r.history)
+    j["energy_history"].push_back({{"step", h.step}, {"time", h.time}, {"seconds", h.seconds}, {"energy", h.energy}});
+  return j;
+}
+
+nlohmann::json toJson(const HoleReport& h) {
+  nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}};
+  if (!h.reason.empty()) j["reason"] = h.reason;
+  if (!h.filled) return j;
+  j["new_vertices"] = h.newVertices;
+  j["new_faces"] = h.newFaces;
+  j["energy_before"] = h.energyBefore;
+  j["energy_after"] = h.energyAfter;
+  j["steps"] = h.steps;
+  j["stop"] = nameOf(h.stop);
+  j["min_angle_degrees"] = h.minAngleDegrees;
+  j["seconds"] = h.seconds;
+  return j;
+}
+
+nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int inputVertices, int inputFaces,
+                             const FairingResult* result) {
+  nlohmann::json j = toJson(r);
+  j["input"] = {{"vertices", inputVertices}, {"faces", inputFaces}};
+  j["flow"] = nameOf(opt.flow);
+  if (result) {
+    j["output"] = {{"vertices", result->mesh.vertexCount()}, {"faces", result->mesh.faceCount()}};
+    if (result->outputCurvature) j["energy_output"] = result->curvature.energy;
+  }
+  return j;
+}
+
+nlohmann::json fillingReport(const FillHolesResult& r, const HoleFillOptions& opt) {
+  const HoleFillReport& report = r.report;
+  const int filled = report.filledCount();
+  nlohmann::json j{{"input", {{"vertices", r.originalVertices}, {"faces", r.originalFaces}}},
+                   {"output", {{"vertices", r.mesh.vertexCount()}, {"faces", r.mesh.faceCount()}}},
+                   {"stop_after", nameOf(opt.stopAfter)},
+                   {"max_hole_edges", opt.maxHoleEdges},
+                   {"filled", filled},
+                   {"skipped", static_cast<int>(report.holes.size()) - filled},
+                   {"vertex_copies_merged", report.welds.size()},
+                   {"seconds", report.seconds},
+                   {"holes", nlohmann::json::array()}};
+  for (const HoleReport& h : report.holes) j["holes"].push_back(toJson(h));
+  return j;
+}
+
+}  // namespace elastica::app

@@ -1,0 +1,204 @@
+"""The Python module against the `elastica` command on the same inputs, against analytic values, and
+on bad arrays. Run by ctest (python_module) with PYTHONPATH at the built module, ELASTICA_EXE at
+the command and OMP_NUM_THREADS=1 (a parallel sum's order depends on the thread count, so equal
+results need equal threads)."""
+import json
+import math
+import os
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import elastica
+
+EXE = os.environ["ELASTICA_EXE"]
+DATA = os.environ["ELASTICA_DATA_DIR"]
+BUNNY_HOLE = os.path.join(DATA, "bunny_flank_hole.ply")
+
+
+def cli(*args):
+    return subprocess.run([EXE, *map(str, args)], check=True, capture_output=True, text=True).stdout
+
+
+@pytest.fixture(scope="module")
+def noisy(tmp_path_factory):
+    path = tmp_path_factory.mktemp("noisy") / "noisy.ply"
+    cli("generate", "icosphere", "--level", 2, "--noise", 0.05, "--seed", 7, "-o", path)
+    return path
+
+
+def same(a, b, rel=1e-12):
+    scale = max(np.abs(b).max(), 1e-300)
+    return a.shape == b.shape and np.abs(a - b).max() <= rel * scale
+
+
+@pytest.mark.parametrize("scheme, extra", [("semi-implicit", []), ("explicit", ["--max-steps", 3000])])
+def test_fair_equals_the_cli(noisy, tmp_path, scheme, extra):
+    out, report = tmp_path / "out.ply", tmp_path / "r.json"
+    cli("fair", noisy, "-o", out, "--scheme", scheme, "--report", report, *extra)
+    V, F = elastica.read(noisy)
+    kwargs = {"max_steps": extra[1]} if extra else {}
+    V2, F2, r = elastica.fair(V, F, scheme=scheme, **kwargs)
+    Vc, Fc = elastica.read(out)
+    assert same(V2, Vc) and (F2 == Fc).all()
+    expected = json.loads(report.read_text())
+    for key in ("energy_initial", "energy_final", "steps", "stop", "flow", "energy_output"):
+        assert r[key] == pytest.approx(expected[key], rel=1e-12) if isinstance(r[key], float) else r[key] == expected[key]
+    assert r["output"] == {"vertices": len(V2), "faces": len(F2)}
+
+
+def test_fair_selected_faces_keeps_the_rest(tmp_path):
+    V, F = elastica.read(os.path.join(DATA, "bunny.ply"))
+    selected = np.arange(0, 400, 2)
+    V2, F2, r = elastica.fair(V, F, selected, scheme="semi-implicit")
+    # A vertex moves only if all its faces are selected: every vertex of an unselected face stays bit for bit.
+    mask = np.ones(len(F), bool)
+    mask[selected] = False
+    fixed = np.unique(F[mask])
+    assert (V2[fixed] == V[fixed]).all()
+    assert (V2 != V).any(axis=1).sum() > 0
+    # The same selection as a bool mask.
+    V3, _, _ = elastica.fair(V, F, ~mask, scheme="semi-implicit")
+    assert (V3 == V2).all()
+    out = tmp_path / "out.ply"
+    faces = tmp_path / "faces.txt"
+    faces.write_text("\n".join(map(str, selected)))
+    cli("fair", os.path.join(DATA, "bunny.ply"), "-o", out, "--scheme", "semi-implicit", "--selected-faces", faces)
+    assert same(V2, elastica.read(out)[0])
+
+
+def test_fill_holes_equals_the_cli(tmp_path):
+    out, report = tmp_path / "out.ply", tmp_path / "r.json"
+    cli("fill", BUNNY_HOLE, "-o", out, "--report", report)
+    V, F = elastica.read(BUNNY_HOLE)
+    V2, F2, new_faces, r = elastica.fill_holes(V, F)
+    Vc, Fc = elastica.read(out)
+    assert same(V2, Vc) and (F2 == Fc).all()
+    # The input comes first, unchanged; the new faces are the appended ones.
+    assert (V2[: len(V)] == V).all() and (F2[: len(F)] == F).all()
+    assert new_faces.dtype == bool and not new_faces[: len(F)].any() and new_faces[len(F):].all()
+    expected = json.loads(report.read_text())
+    assert r["filled"] == expected["filled"] == 1
+    assert [h["border_edges"] for h in r["holes"]] == [h["border_edges"] for h in expected["holes"]]
+
+
+def test_curvature_of_a_sphere_and_the_cli(tmp_path):
+    path = tmp_path / "sphere.ply"
+    cli("generate", "icosphere", "--level", 4, "-o", path)
+    V, F = elastica.read(path)
+    V = V * 2.0  # radius 2: H = 1/2, K = 1/4, E = 8 pi
+    c = elastica.curvature(V, F)
+    assert np.abs(c["H"] - 0.5).max() < 0.005 * 0.5
+    assert np.abs(c["K"] - 0.25).max() < 0.01 * 0.25
+    assert c["energy"] == pytest.approx(8 * math.pi, rel=0.01)
+    text = cli("curvature", path, "-o", tmp_path / "c.ply")
+    cli_energy = float(text.split("total curvature energy E = ")[1].split()[0])
+    assert elastica.curvature(V / 2.0, F)["energy"] == pytest.approx(cli_energy, rel=1e-8)  # printed with 9 digits
+
+
+def test_any_real_dtype_is_accepted(noisy):
+    V, F = elastica.read(noisy)
+    a = elastica.curvature(V, F)["energy"]
+    b = elastica.curvature(V.astype(np.float32).astype(np.float64), F.astype(np.int64))["energy"]
+    c = elastica.curvature(V.astype(np.float32), F.astype(np.uint32))["energy"]
+    assert b == c and a == pytest.approx(b, rel=1e-5)
+
+
+def bad_calls():
+    V, F = elastica.read(os.path.join(DATA, "bunny_flank_hole.ply"))
+    nan = V.copy()
+    nan[5, 2] = np.nan
+    # Three triangles on one edge: non-manifold.
+    Vn = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], float)
+    Fn = np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]])
+    return {
+        "V not n x 3": (V[:, :2], F),
+        "F not m x 3": (V, F[:, :2]),
+        "V not numbers": (np.array([["a", "b", "c"]]), F[:1]),
+        "F not integers": (V, F.astype(float)),
+        "NaN": (nan, F),
+        "index out of range": (V, F + len(V)),
+        "negative index": (V, F - 1),
+        "non-manifold edge": (Vn, Fn),
+    }
+
+
+@pytest.mark.parametrize("case", list(bad_calls()))
+@pytest.mark.parametrize("function", ["fair", "fill_holes", "curvature"])
+def test_bad_arrays_raise_cleanly(case, function):
+    V, F = bad_calls()[case]
+    with pytest.raises(elastica.InvalidInputError) as e:
+        getattr(elastica, function)(V, F)
+    assert isinstance(e.value, ValueError) and isinstance(e.value, elastica.Error) and str(e.value)
+
+
+def test_bad_options_and_selection(noisy):
+    V, F = elastica.read(noisy)
+    for kwargs in ({"flow": "willmore"}, {"scheme": "implicit"}, {"boundary": "free"}, {"subdivide": 9},
+                   {"max_steps": -1}):
+        with pytest.raises(elastica.InvalidInputError):
+            elastica.fair(V, F, **kwargs)
+    for selection in (np.array([len(F)]), np.zeros(len(F), bool), np.zeros(3, bool)):
+        with pytest.raises(elastica.InvalidInputError):
+            elastica.fair(V, F, selection)
+
+
+def test_progress_reports_and_cancels(noisy):
+    V, F = elastica.read(noisy)
+    seen = []
+    elastica.fair(V, F, scheme="semi-implicit", progress=lambda p: seen.append(p) or True)
+    assert seen and {"level", "step", "energy", "lambda", "seconds"} <= set(seen[0])
+    with pytest.raises(elastica.Error, match="cancelled"):
+        elastica.fair(V, F, scheme="semi-implicit", progress=lambda p: p["step"] < 3)
+    with pytest.raises(elastica.Error, match="cancelled"):
+        elastica.fill_holes(*elastica.read(BUNNY_HOLE), progress=lambda p: False)
+
+    def boom(p):
+        raise KeyError("from the callback")
+
+    with pytest.raises(KeyError, match="from the callback"):  # the callback's own error comes through
+        elastica.fair(V, F, scheme="semi-implicit", progress=boom)
+
+
+def test_the_gil_is_released_while_computing(noisy):
+    """A Python thread keeps running while fair computes (an explicit run of a few seconds' worth)."""
+    V, F = elastica.read(noisy)
+    ticks = []
+    done = threading.Event()
+
+    def ticker():
+        while not done.is_set():
+            ticks.append(1)
+            done.wait(0.001)
+
+    t = threading.Thread(target=ticker)
+    t.start()
+    try:
+        elastica.fair(V, F, max_steps=20000)
+    finally:
+        done.set()
+        t.join()
+    assert len(ticks) > 10
+
+
+def test_read_write_round_trip_and_errors(noisy, tmp_path):
+    V, F = elastica.read(noisy)
+    for ascii in (False, True):
+        path = tmp_path / f"rt{int(ascii)}.ply"
+        elastica.write(path, V, F, ascii=ascii)
+        V2, F2 = elastica.read(path)
+        assert (F2 == F).all()
+        # Binary PLY stores the doubles; ASCII their 16 significant digits (last-bit differences).
+        assert (V2 == V).all() if not ascii else same(V2, V, rel=1e-15)
+    with pytest.raises(elastica.IoError) as e:
+        elastica.read(tmp_path / "missing.ply")
+    assert isinstance(e.value, OSError)
+    bad = tmp_path / "bad.off"
+    bad.write_text("OFF\n3 1 0\n0 0 0\n1 0 0\n")
+    with pytest.raises(OSError):
+        elastica.read(bad)
+    with pytest.raises(elastica.IoError):
+        elastica.write(tmp_path / "out.obj", V, F)
+    assert not (tmp_path / "out.obj").exists()
