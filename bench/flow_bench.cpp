@@ -16,7 +16,9 @@
 #include <elastica/io/mesh_reader.h>
 #include <elastica/shapes.h>
 #include <elastica/vcg_adapter.h>
+#include "flow/explicit_integrator.h"
 #include "flow/flow_state.h"
+#include "flow/working_set.h"
 #include "flow/semi_implicit_system.h"
 #include "flow/spd_solver.h"
 
@@ -113,14 +115,15 @@ int throughput(const std::vector<long>& sizes, double seconds) {
     const TriMesh m = torusOf(size);
     FlowOptions opt;
     FlowState state(m, {}, opt, nullptr);
-    state.explicitStep();  // sizes every cache
-    const std::size_t bytes = state.stepWorkingSetBytes();
+    ExplicitIntegrator integrator;
+    integrator.step(state);  // sizes every cache
+    const std::size_t bytes = explicitStepWorkingSetBytes(state, integrator);
     Triad triad(bytes);
     double oneThread = 0;
     for (int t : threads) {
       if (t > maxThreads()) continue;
       setThreads(t);
-      const double step = timePerRun([&] { state.explicitStep(); }, seconds, 3);
+      const double step = timePerRun([&] { integrator.step(state); }, seconds, 3);
       const double pass = timePerRun([&] { triad.run(); }, std::min(seconds, 0.5), 5);
       rows.push_back({m.vertexCount(), t, step, pass});
       if (t == 1) oneThread = step;

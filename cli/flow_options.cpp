@@ -8,7 +8,8 @@
 namespace elastica::cli {
 
 CLI::Validator parameterRange(app::FilterId filter, const std::string& parameter) {
-  const app::ParamSpec* p = app::filterSpec(filter, {}).param(parameter);
+  const app::FilterSpec spec = app::filterSpec(filter, {});  // outlives the ParamSpec read from it
+  const app::ParamSpec* p = spec.param(parameter);
   const double lo = p->minValue, hi = p->maxValue;
   auto str = [](double x) { return CLI::detail::to_string(x); };
   const std::string range = hi < std::numeric_limits<double>::infinity() ? "in " + str(lo) + ".." + str(hi) : ">= " + str(lo);

@@ -2,7 +2,9 @@
 #include <elastica/fairing.h>
 #include <elastica/subdivision.h>
 #include "flow/fair_masked.h"
+#include "flow/explicit_integrator.h"
 #include "flow/flow_state.h"
+#include "flow/semi_implicit_integrator.h"
 
 #include <algorithm>
 #include <chrono>
@@ -83,6 +85,7 @@ struct Run {
 
 // The paper's explicit scheme until the energy-rate plateau (`tolerance`) or a limit.
 void explicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance, double stageStart) {
+  ExplicitIntegrator integrator;
   const FlowOptions& opt = run.opt;
   FlowReport& report = run.report;
   double energy = state.energy();
@@ -108,7 +111,7 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
 
   while (!run.limitReached()) {
     try {
-      run.time += state.explicitStep();
+      run.time += integrator.step(state);
     } catch (const NumericalError& e) {
       diverged(e.what());
     }
@@ -144,17 +147,18 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
 
 // FlowOptions::shapeTolerance: the accepted step `tau` reached the scale of the moving region and
 // moved no vertex along its normal by more than the tolerance (relative to the mean edge length).
-bool shapeSettled(FlowState& state, double tau, double tolerance) {
+bool shapeSettled(FlowState& state, const SemiImplicitIntegrator& integrator, double tau, double tolerance) {
   if (!(tolerance > 0)) return false;
   const double area = state.activeArea();
   return tau >= area * area / kShapeScaleFactor &&
-         state.lastNormalStep() <= tolerance * state.geometry().meanEdgeLength;
+         integrator.lastNormalStep() <= tolerance * state.geometry().meanEdgeLength;
 }
 
 // The semi-implicit scheme with adaptive τ until the energy plateau (no accepted step in the last
 // kPlateauWindow lowered E below what it was before them by more than `tolerance`, relative), the
 // shape settled (FlowOptions::shapeTolerance), no step lowers E any more, or a limit.
 void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance) {
+  SemiImplicitIntegrator integrator;
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;
   const double ell4 = ell * ell * ell * ell;
@@ -163,7 +167,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
   std::deque<double> window{state.energy()};
   while (!run.limitReached()) {
     ++report.steps;  // attempts count against maxSteps
-    if (!state.trySemiImplicitStep(tau)) {
+    if (!integrator.tryStep(state, tau)) {
       ++report.rejectedSteps;
       tau *= kShrink;
       if (tau < kSmallestTau * ell4) {  // nothing lowers E any more
@@ -180,7 +184,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
     tau *= kGrow;
     const double energy = state.energy();
     if (run.record(state, stage.level, energy)) return;
-    if (shapeSettled(state, accepted, run.opt.shapeTolerance)) return;
+    if (shapeSettled(state, integrator, accepted, run.opt.shapeTolerance)) return;
     window.push_back(energy);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
     const double before = window.front();

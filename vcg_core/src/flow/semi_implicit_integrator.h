@@ -1,0 +1,44 @@
+// The semi-implicit scheme (ours; the paper's future work): linearly implicit in the stiff
+// fourth-order part, (M + τ/2 C M⁻¹ C) δ = τ M F for the normal displacement δ, everything else
+// lagged (semi_implicit_system.h). A step is accepted only if no active face turns over, no vertex
+// jumps more than half its mean edge length and (elastica) the energy does not rise; tangential
+// drift passes follow under the same rules.
+#pragma once
+
+#include "flow/flow_state.h"
+#include "flow/tangential.h"
+
+#include <memory>
+#include <vector>
+
+namespace elastica {
+
+class SemiImplicitIntegrator {
+ public:
+  /// One attempt with step `tau`. On success the positions move, drift passes follow, and it
+  /// returns true; if the step fails (the energy rises, a face flips, a vertex jumps, a value is
+  /// non-finite) the positions are unchanged and it returns false.
+  bool tryStep(FlowState& state, double tau);
+  /// The largest normal displacement |δ_i| of the last accepted step.
+  double lastNormalStep() const { return lastNormalStep_; }
+
+ private:
+  void speed(FlowState& state);
+  void buildRows(const FlowState& state);
+  /// Evaluates the moved positions: no active face turned over since faceNormalBefore_, finite
+  /// energy, at most `energyLimit` (elastica).
+  bool acceptable(FlowState& state, double energyLimit);
+  /// One tangential drift pass; undone (returns false) if the result is not acceptable().
+  bool driftPass(FlowState& state, double energyLimit);
+
+  double lastNormalStep_ = 0;
+  long long connectivityVersion_ = -1;  // of the state that freeIndex_ and the solver were built for
+  std::vector<int> freeIndex_;    // vertex → row of the system, or -1
+  std::vector<double> lh_, speed_;
+  std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_, drift_;
+  DriftScratch driftScratch_;
+  struct SparseSolver;  // the system and Eigen's/CHOLMOD's factorisation, pattern analysed once per topology
+  std::shared_ptr<SparseSolver> solver_;
+};
+
+}  // namespace elastica
