@@ -38,7 +38,7 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
       ->capture_default_str()
       ->check(parameterRange(app::FilterId::Fairing, "energyTolerance"));
   cmd.add_option("--shape-tol", opt.shapeTolerance,
-                 "semi-implicit: also stop once a step at the scale of the moving region moves no vertex along its "
+                 "semi-implicit scheme only: also stop once a step at the scale of the moving region moves no vertex along its "
                  "normal by more than this times the mean edge length (fill's default 1e-3; fair's 0: off)")
       ->check(CLI::NonNegativeNumber);
   cmd.add_flag("--no-tangential{false}", opt.tangentialDrift, "disable the tangential drift that keeps triangles even");
@@ -49,6 +49,16 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
   cmd.add_option("--step-factor", opt.stepFactor, "explicit step tau = factor * A_min^2 (paper: 1/150)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  // Two options belong to one scheme each: asking for one with the other scheme is an error,
+  // not a silent ignore (--energy-tol means the same in both).
+  CLI::App* command = &cmd;
+  cmd.parse_complete_callback([command, &opt] {
+    if (opt.scheme == Scheme::Explicit && command->count("--shape-tol") > 0)
+      throw CLI::ValidationError("--shape-tol", "applies to the semi-implicit scheme only (add --scheme semi-implicit)");
+    if (opt.scheme == Scheme::SemiImplicit && command->count("--step-factor") > 0)
+      throw CLI::ValidationError("--step-factor",
+                                 "sets the explicit scheme's step only (the semi-implicit scheme adapts its own)");
+  });
 }
 
 void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt) {

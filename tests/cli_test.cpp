@@ -363,7 +363,8 @@ TEST(Cli, FillRejectsTheOptionsItDoesNotHonour) {
 namespace elastica {
 
 // A flag and its MeshLab parameter accept the same values: the range is the application layer's
-// (app/filter_spec.h), e.g. Subdivision levels 0..8 and Max size to be closed >= 3.
+// (app/filter_spec.h), e.g. Subdivision levels 0..8 and Max size to be closed >= 3; an option of
+// the other scheme is refused.
 TEST(Cli, FlagsCheckTheParametersRanges) {
   ScratchDir dir("cli-ranges");
   const std::string bunny = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";
@@ -372,7 +373,10 @@ TEST(Cli, FlagsCheckTheParametersRanges) {
   } cases[] = {{"fair " + bunny + " --subdivide 9", "--subdivide: Value 9 is not in 0..8"},
                {"fair " + bunny + " --max-steps -1", "--max-steps: Value -1 is not >= 0"},
                {"fair " + bunny + " --energy-tol nan", "--energy-tol: Value nan is not >= 0"},
-               {"fill " + bunny + " --max-hole-edges 2", "--max-hole-edges: Value 2 is not >= 3"}};
+               {"fill " + bunny + " --max-hole-edges 2", "--max-hole-edges: Value 2 is not >= 3"},
+               // an option of one scheme with the other is refused, not silently ignored
+               {"fair " + bunny + " --scheme explicit --shape-tol 1e-3", "--shape-tol: applies to the semi-implicit scheme only"},
+               {"fill " + bunny + " --step-factor 0.01", "--step-factor: sets the explicit scheme's step only"}};
   for (const auto& c : cases) {
     const CommandResult r = runElastica(c.args + " -o " + dir.file("out.ply"));
     EXPECT_EQ(r.exitCode, 2) << c.args;

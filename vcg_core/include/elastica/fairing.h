@@ -20,8 +20,8 @@ namespace elastica {
 /// faces stay as they are; with them, the mesh is rebuilt (new vertices and faces appended,
 /// flipped faces renumbered in place).
 ///
-/// Stops at the energy plateau (FlowOptions::energyTolerance for the explicit scheme,
-/// plateauTolerance and shapeTolerance for the semi-implicit one), at maxSteps / maxSeconds, or
+/// Stops at the energy plateau (FlowOptions::energyTolerance in both schemes; plateauTolerance and
+/// shapeTolerance in the semi-implicit one as well), at maxSteps / maxSeconds, or
 /// when the progress callback cancels; FlowReport::stop says which.
 ///
 /// @throws InvalidInputError if the options are invalid, nothing can move, or a sliver would make

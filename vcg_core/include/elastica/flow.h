@@ -86,7 +86,8 @@ struct FlowOptions {
   /// t / A² (A the moving region's area, so the measure depends on neither scale nor resolution)
   /// falls below this. On a noisy 642-vertex sphere 0.05 leaves a radius spread under 0.5 %;
   /// 0.02 took 4× the steps for a spread of 0.26 % (the last slow mode is a mesh redistribution
-  /// that changes E by ~1e-6 relative per 10,000 steps).
+  /// that changes E by ~1e-6 relative per 10,000 steps). Both schemes: the explicit one measures
+  /// it every checkInterval steps, the semi-implicit one over its last 10 accepted steps.
   double energyTolerance = 0.05;
   /// Subdivide (if levels remain) when the same rate falls below this (near steady state).
   double subdivisionTolerance = 0.05;

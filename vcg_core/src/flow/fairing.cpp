@@ -83,6 +83,14 @@ struct Run {
   }
 };
 
+// Relative energy change per unit of normalised time t/A² (A the moving region's area), the
+// explicit scheme's plateau measure: independent of the model's scale and of the step size, so
+// one FlowOptions::energyTolerance means the same in both schemes.
+double energyRate(double energyBefore, double energyAfter, double flowTime, double area) {
+  const double dtHat = flowTime / (area * area);
+  return (energyBefore - energyAfter) / (std::max(std::abs(energyAfter), 1.0) * dtHat);
+}
+
 // The paper's explicit scheme until the energy-rate plateau (`tolerance`) or a limit.
 void explicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance, double stageStart) {
   ExplicitIntegrator integrator;
@@ -134,12 +142,7 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
     checkpoint = state.mesh().positions;
     checkpointStep = report.steps;
     if (run.record(state, stage.level, energy)) return;
-    // Relative energy change per unit of normalised time t/A² (A the moving region's area):
-    // independent of the model's scale and of the step size.
-    const double area = state.activeArea();
-    const double dtHat = (run.time - lastTime) / (area * area);
-    const double rate = (lastEnergy - energy) / (std::max(std::abs(energy), 1.0) * dtHat);
-    if (std::abs(rate) < tolerance) return;
+    if (std::abs(energyRate(lastEnergy, energy, run.time - lastTime, state.activeArea())) < tolerance) return;
     lastEnergy = energy;
     lastTime = run.time;
   }
@@ -154,10 +157,12 @@ bool shapeSettled(FlowState& state, const SemiImplicitIntegrator& integrator, do
          integrator.lastNormalStep() <= tolerance * state.geometry().meanEdgeLength;
 }
 
-// The semi-implicit scheme with adaptive τ until the energy plateau (no accepted step in the last
-// kPlateauWindow lowered E below what it was before them by more than `tolerance`, relative), the
-// shape settled (FlowOptions::shapeTolerance), no step lowers E any more, or a limit.
-void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance) {
+// The semi-implicit scheme with adaptive τ until the energy rate over the last kPlateauWindow
+// accepted steps falls below `rateTolerance` (FlowOptions::energyTolerance, as the explicit
+// scheme), the energy plateau (no accepted step in that window lowered E below what it was before
+// them by more than `plateauTolerance`, relative), the shape settled (FlowOptions::shapeTolerance),
+// no step lowers E any more, or a limit.
+void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rateTolerance, double plateauTolerance) {
   SemiImplicitIntegrator integrator;
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;
@@ -165,6 +170,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
   const double area0 = state.activeArea();
   double tau = kInitialTau * ell4;
   std::deque<double> window{state.energy()};
+  std::deque<double> windowTime{run.time};
   while (!run.limitReached()) {
     ++report.steps;  // attempts count against maxSteps
     if (!integrator.tryStep(state, tau)) {
@@ -186,11 +192,14 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double tole
     if (run.record(state, stage.level, energy)) return;
     if (shapeSettled(state, integrator, accepted, run.opt.shapeTolerance)) return;
     window.push_back(energy);
+    windowTime.push_back(run.time);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
-    const double before = window.front();
+    const double before = window.front(), timeBefore = windowTime.front();
     window.pop_front();
+    windowTime.pop_front();
     const double best = *std::min_element(window.begin(), window.end());
-    if (before - best <= tolerance * std::max(std::abs(energy), 1.0)) return;
+    if (before - best <= plateauTolerance * std::max(std::abs(energy), 1.0)) return;
+    if (std::abs(energyRate(before, energy, run.time - timeBefore, state.activeArea())) < rateTolerance) return;
   }
 }
 
@@ -231,8 +240,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
       if (opt.scheme == Scheme::Explicit) {
         explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
       } else {
-        const double tol = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
-        semiImplicitStage(state, run, stage, tol);
+        const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
+        semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, plateau);
       }
     } catch (const FlowDivergedError&) {
       mesh = state.mesh();  // the restored checkpoint (faces may have been flipped)
