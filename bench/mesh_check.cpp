@@ -1,0 +1,64 @@
+// mesh_check MESH...: the independent measures of the cage figures (bench/cage_figures.sh), one
+// JSON line per mesh: vertices, faces, genus (from the Euler characteristic of a closed mesh),
+// total curvature energy (mixed and barycentric areas), faces crossing another face (vcglib's
+// Clean::SelfIntersections, a different implementation from the flow's guard), smallest angle.
+#include <elastica/io/mesh_reader.h>
+#include <elastica/mesh_curvature.h>
+#include <elastica/vcg_adapter.h>
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/update/bounding.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <set>
+
+using namespace elastica;
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: mesh_check MESH...\n");
+    return 2;
+  }
+  for (int i = 1; i < argc; ++i) {
+    try {
+      VcgMesh vm;
+      io::readMesh(argv[i], vm);
+      const TriMesh m = toTriMesh(vm);
+      const MeshCurvature mixed = measureCurvature(m);
+      CurvatureMeasureOptions paper;
+      paper.area = VertexArea::Barycentric;
+      const MeshCurvature bary = measureCurvature(m, paper);
+      vcg::tri::UpdateBounding<VcgMesh>::Box(vm);
+      std::vector<VcgFace*> hits;
+      vcg::tri::Clean<VcgMesh>::SelfIntersections(vm, hits);
+      const std::set<VcgFace*> crossing(hits.begin(), hits.end());
+      double minAngle = 180;
+      for (const Face& f : m.faces)
+        for (int k = 0; k < 3; ++k) {
+          const Vec3 a = m.positions[f[(k + 1) % 3]] - m.positions[f[k]];
+          const Vec3 b = m.positions[f[(k + 2) % 3]] - m.positions[f[k]];
+          minAngle = std::min(minAngle, std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI);
+        }
+      nlohmann::json j;
+      j["file"] = argv[i];
+      j["vertices"] = m.vertexCount();
+      j["faces"] = m.faceCount();
+      j["boundary_edges"] = mixed.boundaryEdges;
+      j["genus"] = mixed.boundaryEdges == 0 ? (2 - mixed.eulerCharacteristic) / 2 : -1;
+      j["energy"] = mixed.energy;
+      j["energy_barycentric"] = bary.energy;
+      j["self_intersecting_faces"] = crossing.size();
+      j["min_angle_deg"] = minAngle;
+      std::cout << j.dump() << "\n";
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "mesh_check: %s: %s\n", argv[i], e.what());
+      return 1;
+    }
+  }
+  return 0;
+}
