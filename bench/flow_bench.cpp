@@ -268,9 +268,7 @@ int convergence(const std::string& bunny, double explicitSeconds, const std::vec
     targets.push_back(compareRow("torus R/r = 3", curveOf(re), curveOf(rs), note));
   }
   if (!bunny.empty()) {
-    VcgMesh vm;
-    io::readMesh(bunny, vm);
-    const TriMesh holed = toTriMesh(vm);
+    const TriMesh holed = io::readMesh(bunny).mesh;
     Curve curves[2];
     int newVertices = 0;
     for (int k = 0; k < 2; ++k) {

@@ -20,6 +20,7 @@
 #include <elastica/io/mesh_writer.h>
 #include <elastica/mesh_quality.h>
 #include <elastica/vcg_adapter.h>
+#include <elastica/vcg_mesh.h>
 
 #include <chrono>
 #include <cmath>

@@ -6,7 +6,6 @@
 #include <elastica/app/choices.h>
 #include <elastica/app/filter_run.h>
 #include <elastica/errors.h>
-#include <elastica/vcg_adapter.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -25,9 +24,7 @@ struct CurvatureArgs {
 
 void runCurvature(const CurvatureArgs& a) {
   io::checkOutputPath(a.output, a.input);
-  VcgMesh vm;
-  loadMesh(a.input, vm);
-  const TriMesh mesh = toTriMesh(vm);
+  const TriMesh mesh = loadMesh(a.input).mesh;
   // readMesh refused inconsistent orientation and non-manifold edges and split bow-tie vertices.
   CurvatureMeasureOptions opt;
   opt.area = a.area;
@@ -35,7 +32,7 @@ void runCurvature(const CurvatureArgs& a) {
   const app::CurvatureResult r = app::runCurvature(mesh, opt);
   const MeshCurvature& c = r.curvature;
 
-  writeCurvaturePly(a.output, vm, r.outputH(), c.K, a.ascii, /*color=*/true);
+  writeCurvaturePly(a.output, mesh, r.outputH(), c.K, a.ascii, /*color=*/true);
 
   std::printf("%s: %s, %s, %s, Euler characteristic %d\n", a.input.c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
               plural(mesh.faceCount(), "face").c_str(), c.boundaryEdges ? "with boundary" : "closed",

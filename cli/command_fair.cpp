@@ -7,7 +7,7 @@
 #include "mesh_files.h"
 
 #include <elastica/app/choices.h>
-#include <elastica/app/filter_apply.h>
+#include <elastica/app/filter_run.h>
 #include <elastica/app/reports.h>
 #include <elastica/errors.h>
 
@@ -27,15 +27,15 @@ struct FairArgs {
 void runFair(FairArgs& a) {
   io::checkOutputPath(a.output, a.input);
   if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
-  VcgMesh vm;
-  const io::ReadReport read = loadMesh(a.input, vm);
-  TriMesh input = toTriMesh(vm);
+  io::MeshFile file = loadMesh(a.input);
+  const io::ReadReport& read = file.report;
+  TriMesh input = std::move(file.mesh);
   const int inVertices = input.vertexCount(), inFaces = input.faceCount();
 
   std::vector<std::uint8_t> selection;
   if (a.selected) {
     if (!read.hasFaceSelection) throw InvalidInputError(a.input + ": --selected, but the file has no face selection flags");
-    selection = app::faceSelection(vm);
+    selection = std::move(file.faceSelection);
     if (std::count(selection.begin(), selection.end(), 1) == 0)
       throw InvalidInputError(a.input + ": --selected, but no face is selected");
   }
@@ -73,10 +73,9 @@ void runFair(FairArgs& a) {
   }
   endProgressLine();
 
-  // The input's other attributes stay when the connectivity is unchanged (no subdivision, no flips).
-  app::writeBack(result, vm);
+  // The file's other attributes are not written (the reader keeps only the face selection).
   const MeshCurvature& curv = result.curvature;
-  writeCurvaturePly(a.output, vm, curv.H, curv.K, a.ascii, a.color);
+  writeCurvaturePly(a.output, result.mesh, curv.H, curv.K, a.ascii, a.color);
   const TriMesh& mesh = result.mesh;
   const FlowReport& report = result.report;
 

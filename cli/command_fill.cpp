@@ -11,6 +11,7 @@
 #include <elastica/app/reports.h>
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
+#include <elastica/vcg_mesh.h>
 
 #include <cstdio>
 #include <iostream>

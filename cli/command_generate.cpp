@@ -5,7 +5,6 @@
 
 #include <elastica/shapes.h>
 #include <elastica/subdivision.h>
-#include <elastica/vcg_adapter.h>
 
 #include <cstdio>
 
@@ -34,11 +33,7 @@ void runGenerate(const GenerateArgs& a) {
   }
   else mesh = shapes::grid(seg(0, 10), seg(1, 10), a.spacing);
   if (a.noise > 0) shapes::addRadialNoise(mesh, a.noise, a.seed);
-  VcgMesh vm;
-  fromTriMesh(mesh, vm);
-  io::PlyWriteOptions w;
-  w.binary = !a.ascii;
-  io::writePly(a.output, vm, w);
+  io::writePly(a.output, mesh, {}, !a.ascii);
   std::printf("wrote %s: %s, %d vertices, %d faces\n", a.output.c_str(), a.shape.c_str(), mesh.vertexCount(),
               mesh.faceCount());
 }

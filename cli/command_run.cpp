@@ -9,6 +9,7 @@
 #include <elastica/errors.h>
 #include <elastica/app/filter_apply.h>
 #include <elastica/app/filter_spec.h>
+#include <elastica/vcg_mesh.h>
 
 #include <unistd.h>
 

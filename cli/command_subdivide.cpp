@@ -5,7 +5,6 @@
 #include "mesh_files.h"
 
 #include <elastica/subdivision.h>
-#include <elastica/vcg_adapter.h>
 
 #include <cstdio>
 
@@ -20,16 +19,10 @@ struct SubdivideArgs {
 
 void runSubdivide(const SubdivideArgs& a) {
   io::checkOutputPath(a.output, a.input);
-  VcgMesh vm;
-  loadMesh(a.input, vm);
-  TriMesh mesh = toTriMesh(vm);
+  TriMesh mesh = loadMesh(a.input).mesh;
   const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
   for (int l = 0; l < a.levels; ++l) subdivideMidpoint(mesh);
-  VcgMesh out;
-  fromTriMesh(mesh, out);
-  io::PlyWriteOptions w;
-  w.binary = !a.ascii;
-  io::writePly(a.output, out, w);
+  io::writePly(a.output, mesh, {}, !a.ascii);
   std::printf("%s: %s, %s -> %s, %s\nwrote %s\n", a.input.c_str(), plural(inVertices, "vertex").c_str(),
               plural(inFaces, "face").c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
               plural(mesh.faceCount(), "face").c_str(), a.output.c_str());

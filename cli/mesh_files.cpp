@@ -1,6 +1,7 @@
 #include "mesh_files.h"
 
 #include <elastica/vcg_adapter.h>
+#include <elastica/vcg_mesh.h>
 
 #include <iostream>
 
@@ -13,18 +14,23 @@ std::string plural(std::size_t n, const std::string& word) {
   return std::to_string(n) + " " + (ex ? word.substr(0, word.size() - 2) + "ices" : word + "s");
 }
 
-void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& reportedH,
+void writeCurvaturePly(const std::string& path, const TriMesh& mesh, const std::vector<double>& reportedH,
                        const std::vector<double>& K, bool ascii, bool color) {
-  storeCurvature(m, reportedH, K);
-  io::PlyWriteOptions w;
-  w.binary = !ascii;
-  w.vertexQuality = w.curvature = true;
-  w.vertexColor = color;
-  io::writePly(path, m, w);
+  const std::vector<float> h(reportedH.begin(), reportedH.end()), k(K.begin(), K.end());
+  std::vector<std::array<std::uint8_t, 4>> colors;
+  io::PlyAttributes a;
+  if (color) {
+    colors.reserve(reportedH.size());
+    for (const vcg::Color4b& c : qualityColorRamp(reportedH)) colors.push_back({c[0], c[1], c[2], c[3]});
+    a.vertexColors = &colors;
+  }
+  a.vertexQuality = &reportedH;
+  a.vertexFloats = {{"mean_curvature", &h}, {"gaussian_curvature", &k}};
+  io::writePly(path, mesh, a, !ascii);
 }
 
-io::ReadReport loadMesh(const std::string& path, VcgMesh& m) {
-  io::ReadReport r = io::readMesh(path, m);
+namespace {
+void noteRepairs(const std::string& path, const io::ReadReport& r) {
   auto note = [&](int n, const std::string& what) {
     if (n > 0) std::cerr << "note: " << path << ": " << what << "\n";
   };
@@ -37,6 +43,18 @@ io::ReadReport loadMesh(const std::string& path, VcgMesh& m) {
   note(r.nonManifoldVerticesSplit, "split " + plural(r.nonManifoldVerticesSplit, "non-manifold vertex") +
                                        " (several fans of faces meeting at one point) into one vertex per fan");
   note(r.unreferencedVerticesRemoved, "removed " + plural(r.unreferencedVerticesRemoved, "unreferenced vertex"));
+}
+}  // namespace
+
+io::MeshFile loadMesh(const std::string& path) {
+  io::MeshFile file = io::readMesh(path);
+  noteRepairs(path, file.report);
+  return file;
+}
+
+io::ReadReport loadMesh(const std::string& path, VcgMesh& m) {
+  const io::ReadReport r = io::readMesh(path, m);
+  noteRepairs(path, r);
   return r;
 }
 

@@ -10,14 +10,17 @@
 
 namespace elastica::cli {
 
-/// Reads `path` into `m`, telling on stderr what was repaired on the way (merged vertices,
-/// triangulated polygons, removed faces, split vertices; see io::readMesh). @throws IoError.
+/// Reads `path` (io::readMesh), telling on stderr what was repaired on the way (merged vertices,
+/// triangulated polygons, removed faces, split vertices). @throws IoError.
+io::MeshFile loadMesh(const std::string& path);
+
+/// The same into a vcglib mesh, for the commands that work on one (`run`, `fill`). @throws IoError.
 io::ReadReport loadMesh(const std::string& path, VcgMesh& m);
 
-/// Stores H (the reported sign, +1/r on a sphere: MeshCurvature::H) and K on `m` and writes it as
-/// PLY with quality = H and the mean_curvature / gaussian_curvature attributes, plus the colour
-/// ramp by H if `color`. @throws IoError.
-void writeCurvaturePly(const std::string& path, VcgMesh& m, const std::vector<double>& reportedH,
+/// Writes `mesh` as PLY with quality = H (the reported sign, +1/r on a sphere:
+/// MeshCurvature::H) and the mean_curvature / gaussian_curvature attributes, plus the colour ramp
+/// by H if `color`. @throws IoError.
+void writeCurvaturePly(const std::string& path, const TriMesh& mesh, const std::vector<double>& reportedH,
                        const std::vector<double>& K, bool ascii, bool color);
 
 /// Human-readable count, e.g. "1 face" / "3 faces".

@@ -11,7 +11,6 @@
 #include <elastica/io/atomic_file.h>
 #include <elastica/io/mesh_reader.h>
 #include <elastica/io/mesh_writer.h>
-#include <elastica/vcg_adapter.h>
 
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
@@ -248,9 +247,7 @@ std::string pathOf(const py::object& path) { return py::module_::import("os").at
 
 py::tuple readFile(const py::object& pathLike) {
   const std::string path = pathOf(pathLike);
-  VcgMesh vm;
-  io::readMesh(path, vm);  // the CLI's reader: its checks, repairs and messages
-  const TriMesh mesh = toTriMesh(vm);
+  const TriMesh mesh = io::readMesh(path).mesh;  // the CLI's reader: its checks, repairs and messages
   return py::make_tuple(vertexArray(mesh), faceArray(mesh));
 }
 
@@ -259,11 +256,7 @@ void writeFile(const py::object& pathLike, const py::object& V, const py::object
   const TriMesh mesh = toMesh(V, F);
   if (io::formatFromExtension(path) != io::MeshFormat::Ply)
     throw IoError(path + ": elastica.write writes PLY only (.ply)");
-  VcgMesh vm;
-  fromTriMesh(mesh, vm);
-  io::PlyWriteOptions w;
-  w.binary = !ascii;
-  io::writePly(path, vm, w);  // atomic: a failed write leaves no half-written file
+  io::writePly(path, mesh, {}, !ascii);  // atomic: a failed write leaves no half-written file
 }
 
 }  // namespace

@@ -35,6 +35,7 @@ PACKAGES=(
   imagemagick                                          # ... and screenshots it (import)
   f3d                                                  # headless renders for docs (bench/render_mesh.sh)
   gnuplot-nox jq                                       # energy curves from the JSON reports (bench/paper_figures.sh)
+  time                                                 # /usr/bin/time -v: wall time and peak memory (bench/io_bench.sh)
 )
 
 log() { printf 'setup: %s\n' "$*" >&2; }

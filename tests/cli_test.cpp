@@ -7,6 +7,7 @@
 #include <elastica/io/mesh_reader.h>
 #include <elastica/sign_convention.h>
 #include <elastica/vcg_adapter.h>
+#include <elastica/vcg_mesh.h>
 
 #include <gtest/gtest.h>
 

@@ -5,10 +5,16 @@
 #include <elastica/io/mesh_writer.h>
 #include <elastica/shapes.h>
 #include <elastica/vcg_adapter.h>
+#include <elastica/vcg_mesh.h>
 
 #include <gtest/gtest.h>
+#include <wrap/io_trimesh/export_ply.h>
 
 #include <sys/stat.h>
+
+#include <fstream>
+#include <iterator>
+#include <random>
 
 namespace elastica {
 using test::ScratchDir;
@@ -182,6 +188,86 @@ TEST(MeshIo, OutputChecksAndAtomicWrite) {
   // A failed write leaves the destination untouched.
   EXPECT_THROW(io::writePly(dir.file("nodir/x.ply"), vm, opt), IoError);
   EXPECT_FALSE(std::filesystem::exists(dir.file("nodir")));
+}
+
+// Our PLY writer replaced vcglib's ExporterPLY: its files must be the exporter's, byte for byte,
+// for every attribute the commands write, in binary and ASCII, with values of every length
+// (tiny, huge, negative: the longest %.16g text) and non-trivial flags.
+TEST(MeshIo, PlyWriterMatchesVcglibExporterByteForByte) {
+  ScratchDir dir("vcg-bytes");
+  namespace vio = vcg::tri::io;
+  VcgMesh vm;
+  fromTriMesh(shapes::torus(3, 1, 12, 6), vm);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<double> H, K;
+  for (auto& v : vm.vert) {
+    for (int k = 0; k < 3; ++k) v.P()[k] = unit(rng) * std::pow(10.0, static_cast<int>(unit(rng) * 12));
+    v.N() = vcg::Point3d(unit(rng), unit(rng), -1e-300 * unit(rng));
+    H.push_back(unit(rng) * 1e4);
+    K.push_back(-unit(rng) * 1e-7);
+  }
+  storeCurvature(vm, H, K);  // quality, colours and the two float attributes
+  auto isNew = vcg::tri::Allocator<VcgMesh>::GetPerFaceAttribute<float>(vm, "elastica_new");
+  for (size_t f = 0; f < vm.face.size(); ++f) {
+    isNew[f] = f % 3 == 0 ? 1.0f : 0.0f;
+    if (f % 2) vm.face[f].SetS();
+    if (f % 5 == 0) vm.face[f].SetB(0);
+  }
+  auto bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (bool binary : {true, false}) {
+    io::PlyWriteOptions opt;
+    opt.binary = binary;
+    opt.vertexQuality = opt.vertexColor = opt.vertexNormal = opt.curvature = opt.faceFlags = true;
+    opt.faceFloatAttributes = {"elastica_new"};
+    const std::string ours = dir.file(binary ? "ours_b.ply" : "ours_a.ply");
+    io::writePly(ours, vm, opt);
+
+    // The same request to vcglib (PlyInfo as mesh_writer.cpp built it before).
+    vio::PlyInfo info;
+    info.mask = vio::Mask::IOM_VERTCOORD | vio::Mask::IOM_FACEINDEX | vio::Mask::IOM_VERTQUALITY |
+                vio::Mask::IOM_VERTCOLOR | vio::Mask::IOM_VERTNORMAL | vio::Mask::IOM_FACEFLAGS;
+    auto add = [&](bool face, const char* name) {
+      (face ? info.FaceAttrNameVec : info.VertAttrNameVec).push_back(name);
+      auto& d = face ? info.FaceDescriptorVec : info.VertDescriptorVec;
+      d.push_back(vcg::ply::PropDescriptor());
+      d.back().elemname = face ? "face" : "vertex";
+      d.back().propname = name;
+      d.back().stotype1 = d.back().memtype1 = vcg::ply::T_FLOAT;
+    };
+    add(true, "elastica_new");
+    add(false, "mean_curvature");
+    add(false, "gaussian_curvature");
+    const std::string theirs = dir.file(binary ? "vcg_b.ply" : "vcg_a.ply");
+    ASSERT_EQ(vio::ExporterPLY<VcgMesh>::Save(vm, theirs.c_str(), binary, info), 0);
+    const std::string a = bytes(ours), b = bytes(theirs);
+    ASSERT_GT(b.size(), 1000u);
+    EXPECT_TRUE(a == b) << (binary ? "binary" : "ascii") << ": " << a.size() << " vs " << b.size() << " bytes";
+  }
+}
+
+// The TriMesh reader: positions, faces and the face selection as the file has them.
+TEST(MeshIo, ReadsIntoTheCoreMeshWithTheSelection) {
+  ScratchDir dir("trimesh");
+  writeText(dir.file("s.ply"),
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face 2\nproperty list uchar int vertex_indices\nproperty int flags\nend_header\n"
+            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2 32\n3 0 2 3 0\n");
+  const io::MeshFile file = io::readMesh(dir.file("s.ply"));
+  ASSERT_EQ(file.mesh.vertexCount(), 4);
+  EXPECT_EQ(file.mesh.faces, (std::vector<Face>{{0, 1, 2}, {0, 2, 3}}));
+  EXPECT_TRUE(file.report.hasFaceSelection);
+  EXPECT_EQ(file.faceSelection, (std::vector<std::uint8_t>{1, 0}));
+  // A binary file over several read buffers (1 MB each) reads back exactly.
+  const TriMesh big = shapes::icosphere(1.0, 6);  // 40,962 vertices, 2.3 MB of PLY
+  io::writePly(dir.file("big.ply"), big, {}, true);
+  const io::MeshFile back = io::readMesh(dir.file("big.ply"));
+  EXPECT_EQ(back.mesh.positions, big.positions);
+  EXPECT_EQ(back.mesh.faces, big.faces);
+  EXPECT_TRUE(back.faceSelection.empty());
 }
 
 }  // namespace elastica

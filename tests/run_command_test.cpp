@@ -8,6 +8,7 @@
 #include <elastica/io/mesh_writer.h>
 #include <elastica/shapes.h>
 #include <elastica/vcg_adapter.h>
+#include <elastica/vcg_mesh.h>
 
 #include <gtest/gtest.h>
 

@@ -7,7 +7,6 @@
 #include <elastica/errors.h>
 #include <elastica/io/mesh_reader.h>
 #include <elastica/topology.h>
-#include <elastica/vcg_adapter.h>
 
 #include <unistd.h>
 
@@ -37,14 +36,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size > 0 && std::fwrite(data, 1, size, f) != size) std::abort();
   std::fclose(f);
 
-  elastica::VcgMesh vm;
+  elastica::io::MeshFile file;
   try {
-    elastica::io::readMesh(path, vm);
+    file = elastica::io::readMesh(path);
   } catch (const elastica::Error&) {
     return 0;
   }
-  // Accepted: the mesh must be one the core takes as it is.
-  const elastica::TriMesh mesh = elastica::toTriMesh(vm);
+  // Accepted: the mesh must be one the core takes as it is, the selection one byte per face.
+  const elastica::TriMesh& mesh = file.mesh;
+  if (file.report.hasFaceSelection != !file.faceSelection.empty() && mesh.faceCount() > 0) std::abort();
+  if (!file.faceSelection.empty() && file.faceSelection.size() != mesh.faces.size()) std::abort();
   const elastica::Topology topo(mesh.vertexCount(), mesh.faces);
   if (topo.faceCount() == 0 || topo.nonManifoldVertexCount() != 0 || topo.inconsistentEdgeCount() != 0) std::abort();
   const elastica::Geometry geo = elastica::computeGeometry(topo, mesh.positions);

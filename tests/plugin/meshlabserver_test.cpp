@@ -11,6 +11,7 @@
 #include <elastica/shapes.h>
 #include <elastica/topology.h>
 #include <elastica/vcg_adapter.h>
+#include <elastica/vcg_mesh.h>
 
 #include <wrap/io_trimesh/import_ply.h>
 

@@ -26,8 +26,9 @@ MeshFormat formatFromExtension(const std::string& path) {
   throw IoError(path + ": unknown mesh file extension " + detail::quote(ext) + " (expected .ply, .off, .stl or .obj)");
 }
 
-ReadReport readMesh(const std::string& path, VcgMesh& m) {
-  ReadReport report;
+MeshFile readMesh(const std::string& path) {
+  MeshFile file;
+  ReadReport& report = file.report;
   report.format = formatFromExtension(path);
   std::error_code ec;
   const auto status = fs::status(path, ec);
@@ -39,15 +40,14 @@ ReadReport readMesh(const std::string& path, VcgMesh& m) {
   if (ec) fail(path, "cannot read its size (" + ec.message() + ")");
   if (size == 0) fail(path, "empty file");
 
-  m.Clear();
   switch (report.format) {
-    case MeshFormat::Ply: detail::readPly(path, size, m, report); break;
-    case MeshFormat::Off: detail::readOff(path, m, report); break;
-    case MeshFormat::Stl: detail::readStl(path, m); break;
-    case MeshFormat::Obj: detail::readObj(path, m, report); break;
+    case MeshFormat::Ply: detail::readPly(path, size, file.mesh, file.faceSelection, report); break;
+    case MeshFormat::Off: detail::readOff(path, file.mesh, report); break;
+    case MeshFormat::Stl: detail::readStl(path, file.mesh); break;
+    case MeshFormat::Obj: detail::readObj(path, file.mesh, report); break;
   }
-  detail::checkAndRepair(path, m, report);
-  return report;
+  detail::checkAndRepair(path, file.mesh, file.faceSelection, report);
+  return file;
 }
 
 }  // namespace elastica::io

@@ -1,51 +1,166 @@
+// PLY straight from arrays. The layout is vcglib's ExporterPLY's for our double VcgMesh, kept
+// byte for byte (files written before and after this writer compare equal): the header with its
+// "comment VCGLIB generated" line, x y z [nx ny nz] [red green blue alpha] [quality] [float
+// attributes] per vertex, "list uchar int vertex_indices" [flags] [float attributes] per face;
+// in ASCII, doubles as %.16g, float attributes as %f, every value followed by a space. Rows are
+// formatted into a buffer written a megabyte at a time (vcglib wrote each value by fwrite).
 #include <elastica/errors.h>
 #include <elastica/io/atomic_file.h>
 #include <elastica/io/mesh_writer.h>
 
-#include <wrap/io_trimesh/export_ply.h>
-
-#include <deque>
-#include <string>
+#include <cerrno>
+#include <cstdarg>
+#include <cstdio>
+#include <cstring>
+#include <memory>
 
 namespace elastica::io {
-
-namespace vio = vcg::tri::io;
 namespace {
 
-// A float attribute of `m` (by name) to write as a PLY property of the same name. Not
-// PlyInfo::AddPerElemFloatAttribute: it keeps pointers to the vectors of the first PlyInfo it
-// ever sees in function-local statics (every later PlyInfo in the process writes into that dead
-// object and saves none of its attributes) and strdup's names it never frees. `names` owns the
-// property names (a deque: adding keeps the earlier ones in place) while `info` is in use.
-void addFloatAttribute(vio::PlyInfo& info, std::deque<std::string>& names, bool face, const std::string& name) {
-  names.push_back(name);
-  (face ? info.FaceAttrNameVec : info.VertAttrNameVec).push_back(name);
-  auto& descriptors = face ? info.FaceDescriptorVec : info.VertDescriptorVec;
-  descriptors.push_back(vcg::ply::PropDescriptor());
-  descriptors.back().elemname = face ? "face" : "vertex";
-  descriptors.back().propname = names.back().c_str();
-  descriptors.back().stotype1 = vcg::ply::T_FLOAT;
-  descriptors.back().memtype1 = vcg::ply::T_FLOAT;
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the binary PLY writer copies values in memory order");
+
+class Output {
+ public:
+  Output(const std::string& path, const std::string& tmp) : path_(path), file_(std::fopen(tmp.c_str(), "wb")) {
+    if (!file_) failed();
+    buffer_.reserve(kFlush + 4096);
+  }
+  ~Output() {
+    if (file_) std::fclose(file_);
+  }
+  Output(const Output&) = delete;
+  Output& operator=(const Output&) = delete;
+
+  template <class T>
+  void binary(T value) {
+    const char* b = reinterpret_cast<const char*>(&value);
+    buffer_.insert(buffer_.end(), b, b + sizeof value);
+  }
+  void text(const char* format, ...) __attribute__((format(printf, 2, 3))) {
+    // At most three %.16g numbers (24 characters each: "-1.234567890123456e-308") and spaces.
+    char line[128];
+    va_list args;
+    va_start(args, format);
+    const int n = std::vsnprintf(line, sizeof line, format, args);
+    va_end(args);
+    if (n < 0 || n >= static_cast<int>(sizeof line)) throw IoError(path_ + ": writing failed (a value too long to format)");
+    buffer_.insert(buffer_.end(), line, line + n);
+  }
+  void raw(const std::string& s) { buffer_.insert(buffer_.end(), s.begin(), s.end()); }
+  void endRow() {
+    if (buffer_.size() >= kFlush) flush();
+  }
+  void close() {
+    flush();
+    FILE* f = file_;
+    file_ = nullptr;
+    if (std::fclose(f) != 0) failed();
+  }
+
+ private:
+  static constexpr size_t kFlush = 1 << 20;
+  void flush() {
+    if (!buffer_.empty() && std::fwrite(buffer_.data(), 1, buffer_.size(), file_) != buffer_.size()) failed();
+    buffer_.clear();
+  }
+  [[noreturn]] void failed() const {
+    throw IoError(path_ + ": writing failed (" + std::strerror(errno) + ")");
+  }
+  std::string path_;
+  std::FILE* file_;
+  std::vector<char> buffer_;
+};
+
+template <class T>
+void checkLength(const std::string& path, const std::vector<T>* values, size_t n, const std::string& what) {
+  if (values && values->size() != n)
+    throw IoError(path + ": " + what + " has " + std::to_string(values->size()) + " values for " + std::to_string(n) +
+                  " elements; nothing written");
+}
+
+std::string header(const TriMesh& mesh, const PlyAttributes& a, bool binary) {
+  std::string h = std::string("ply\nformat ") + (binary ? "binary_little_endian" : "ascii") +
+                  " 1.0\ncomment VCGLIB generated\n";
+  h += "element vertex " + std::to_string(mesh.positions.size()) + "\nproperty double x\nproperty double y\nproperty double z\n";
+  if (a.vertexNormals) h += "property double nx\nproperty double ny\nproperty double nz\n";
+  if (a.vertexColors) h += "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha\n";
+  if (a.vertexQuality) h += "property double quality\n";
+  for (const PlyFloatProperty& p : a.vertexFloats) h += "property float " + p.name + "\n";
+  h += "element face " + std::to_string(mesh.faces.size()) + "\nproperty list uchar int vertex_indices\n";
+  if (a.faceFlags) h += "property int flags\n";
+  for (const PlyFloatProperty& p : a.faceFloats) h += "property float " + p.name + "\n";
+  return h + "end_header\n";
+}
+
+void writeBody(Output& out, const TriMesh& mesh, const PlyAttributes& a, bool binary) {
+  constexpr int kDigits = 16;  // vcglib's Precision<double>::digits()
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3& p = mesh.positions[v];
+    if (binary) {
+      for (int k = 0; k < 3; ++k) out.binary(p[k]);
+      if (a.vertexNormals)
+        for (int k = 0; k < 3; ++k) out.binary((*a.vertexNormals)[v][k]);
+      if (a.vertexColors)
+        for (std::uint8_t c : (*a.vertexColors)[v]) out.binary(c);
+      if (a.vertexQuality) out.binary((*a.vertexQuality)[v]);
+      for (const PlyFloatProperty& f : a.vertexFloats) out.binary((*f.values)[v]);
+    } else {
+      out.text("%.*g %.*g %.*g ", kDigits, p[0], kDigits, p[1], kDigits, p[2]);
+      if (a.vertexNormals) {
+        const Vec3& n = (*a.vertexNormals)[v];
+        out.text("%.*g %.*g %.*g ", kDigits, n[0], kDigits, n[1], kDigits, n[2]);
+      }
+      if (a.vertexColors) {
+        const auto& c = (*a.vertexColors)[v];
+        out.text("%d %d %d %d ", c[0], c[1], c[2], c[3]);
+      }
+      if (a.vertexQuality) out.text("%.*g ", kDigits, (*a.vertexQuality)[v]);
+      for (const PlyFloatProperty& f : a.vertexFloats) out.text("%f ", static_cast<double>((*f.values)[v]));
+      out.raw("\n");
+    }
+    out.endRow();
+  }
+  for (size_t f = 0; f < mesh.faces.size(); ++f) {
+    const Face& t = mesh.faces[f];
+    if (binary) {
+      out.binary(std::uint8_t{3});
+      for (int v : t) out.binary(static_cast<std::int32_t>(v));
+      if (a.faceFlags) out.binary(static_cast<std::int32_t>((*a.faceFlags)[f]));
+      for (const PlyFloatProperty& p : a.faceFloats) out.binary((*p.values)[f]);
+    } else {
+      out.text("3 %d %d %d ", t[0], t[1], t[2]);
+      if (a.faceFlags) out.text("%d ", (*a.faceFlags)[f]);
+      for (const PlyFloatProperty& p : a.faceFloats) out.text("%f ", static_cast<double>((*p.values)[f]));
+      out.raw("\n");
+    }
+    out.endRow();
+  }
 }
 
 }  // namespace
 
-void writePly(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt) {
-  std::deque<std::string> names;
-  vio::PlyInfo info;
-  info.mask = vio::Mask::IOM_VERTCOORD | vio::Mask::IOM_FACEINDEX;
-  if (opt.vertexQuality) info.mask |= vio::Mask::IOM_VERTQUALITY;
-  if (opt.vertexColor) info.mask |= vio::Mask::IOM_VERTCOLOR;
-  if (opt.vertexNormal) info.mask |= vio::Mask::IOM_VERTNORMAL;
-  if (opt.faceFlags) info.mask |= vio::Mask::IOM_FACEFLAGS;
-  for (const std::string& name : opt.faceFloatAttributes) addFloatAttribute(info, names, true, name);
-  if (opt.curvature) {
-    addFloatAttribute(info, names, false, "mean_curvature");
-    addFloatAttribute(info, names, false, "gaussian_curvature");
+void writePly(const std::string& path, const TriMesh& mesh, const PlyAttributes& a, bool binary) {
+  const size_t nv = mesh.positions.size(), nf = mesh.faces.size();
+  checkLength(path, a.vertexNormals, nv, "the vertex normals");
+  checkLength(path, a.vertexColors, nv, "the vertex colours");
+  checkLength(path, a.vertexQuality, nv, "the vertex quality");
+  for (const PlyFloatProperty& p : a.vertexFloats) {
+    if (!p.values) throw IoError(path + ": vertex property " + p.name + " has no values; nothing written");
+    checkLength(path, p.values, nv, "vertex property " + p.name);
   }
+  checkLength(path, a.faceFlags, nf, "the face flags");
+  for (const PlyFloatProperty& p : a.faceFloats) {
+    if (!p.values) throw IoError(path + ": face property " + p.name + " has no values; nothing written");
+    checkLength(path, p.values, nf, "face property " + p.name);
+  }
+  for (const Face& t : mesh.faces)
+    for (int v : t)
+      if (v < 0 || static_cast<size_t>(v) >= nv) throw IoError(path + ": a face refers to a vertex the mesh does not have; nothing written");
   writeAtomically(path, [&](const std::string& tmp) {
-    const int err = vio::ExporterPLY<VcgMesh>::Save(m, tmp.c_str(), opt.binary, info);
-    if (err != 0) throw IoError(path + ": writing failed (" + vio::ExporterPLY<VcgMesh>::ErrorMsg(err) + ")");
+    Output out(path, tmp);
+    out.raw(header(mesh, a, binary));
+    writeBody(out, mesh, a, binary);
+    out.close();
   });
 }
 

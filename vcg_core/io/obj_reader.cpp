@@ -33,7 +33,7 @@ void checkVertexLines(const std::string& path) {
 
 }  // namespace
 
-void readObj(const std::string& path, VcgMesh& m, ReadReport& report) {
+void readObj(const std::string& path, TriMesh& mesh, ReadReport& report) {
   checkVertexLines(path);
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // we fan-triangulate ourselves, to count and to check indices
@@ -46,8 +46,8 @@ void readObj(const std::string& path, VcgMesh& m, ReadReport& report) {
   }
   const auto& xyz = reader.GetAttrib().vertices;
   const size_t nv = xyz.size() / 3;
-  auto vi = vcg::tri::Allocator<VcgMesh>::AddVertices(m, nv);
-  for (size_t i = 0; i < nv; ++i, ++vi) vi->P() = vcg::Point3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+  mesh.positions.reserve(nv);
+  for (size_t i = 0; i < nv; ++i) mesh.positions.emplace_back(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
 
   size_t triangles = 0, face = 0;
   for (const auto& shape : reader.GetShapes()) {
@@ -62,7 +62,7 @@ void readObj(const std::string& path, VcgMesh& m, ReadReport& report) {
       ++face;
     }
   }
-  auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, triangles);
+  mesh.faces.reserve(triangles);
   face = 0;
   for (const auto& shape : reader.GetShapes()) {
     size_t offset = 0;
@@ -72,14 +72,10 @@ void readObj(const std::string& path, VcgMesh& m, ReadReport& report) {
         if (idx < 0 || static_cast<size_t>(idx) >= nv)
           fail(path, "face " + std::to_string(face) + " refers to vertex " + std::to_string(idx + 1) +
                          " (OBJ counts from 1), but the file has " + std::to_string(nv) + " vertices");
-        return &m.vert[idx];
+        return idx;
       };
       if (n > 3) ++report.polygonsTriangulated;
-      for (unsigned k = 1; k + 1 < n; ++k, ++fi) {
-        fi->V(0) = vertex(0);
-        fi->V(1) = vertex(k);
-        fi->V(2) = vertex(k + 1);
-      }
+      for (unsigned k = 1; k + 1 < n; ++k) mesh.faces.push_back({vertex(0), vertex(k), vertex(k + 1)});
       offset += n;
       ++face;
     }

@@ -36,7 +36,7 @@ class Lines {
 
 }  // namespace
 
-void readOff(const std::string& path, VcgMesh& m, ReadReport& report) {
+void readOff(const std::string& path, TriMesh& mesh, ReadReport& report) {
   Lines lines(path);
   std::vector<std::string_view> t;
   auto at = [&] { return " (line " + std::to_string(lines.number()) + ")"; };
@@ -64,8 +64,8 @@ void readOff(const std::string& path, VcgMesh& m, ReadReport& report) {
     fail(path, "the OFF header claims " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
                    " faces, more than the file's " + std::to_string(size) + " bytes can hold");
 
-  auto vi = vcg::tri::Allocator<VcgMesh>::AddVertices(m, static_cast<size_t>(nv));
-  for (long long v = 0; v < nv; ++v, ++vi) {
+  mesh.positions.reserve(static_cast<size_t>(nv));
+  for (long long v = 0; v < nv; ++v) {
     if (!lines.next(t))
       fail(path, "truncated OFF: the file ends after " + std::to_string(v) + " of " + std::to_string(nv) + " vertices");
     double x[3];
@@ -75,11 +75,11 @@ void readOff(const std::string& path, VcgMesh& m, ReadReport& report) {
                        (static_cast<size_t>(k) < t.size() ? ", found " + quote(t[k]) : std::string()) + at());
       if (!std::isfinite(x[k])) fail(path, "vertex " + std::to_string(v) + " has a non-finite coordinate " + quote(t[k]) + at());
     }
-    vi->P() = vcg::Point3d(x[0], x[1], x[2]);
+    mesh.positions.emplace_back(x[0], x[1], x[2]);
   }
 
   std::vector<int> corners;
-  std::vector<std::array<int, 3>> triangles;
+  std::vector<Face>& triangles = mesh.faces;
   for (long long f = 0; f < nf; ++f) {
     if (!lines.next(t))
       fail(path, "truncated OFF: the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
@@ -100,11 +100,6 @@ void readOff(const std::string& path, VcgMesh& m, ReadReport& report) {
     }
     if (n > 3) ++report.polygonsTriangulated;
     for (size_t k = 1; k + 1 < corners.size(); ++k) triangles.push_back({corners[0], corners[k], corners[k + 1]});
-  }
-  auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, triangles.size());
-  for (const auto& tri : triangles) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[tri[k]];
-    ++fi;
   }
 }
 

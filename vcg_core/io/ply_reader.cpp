@@ -40,7 +40,6 @@ std::string numberText(double v) {
   return buf;
 }
 
-bool isSignedType(std::string_view t) { return t == "char" || t == "int8" || t == "short" || t == "int16" || t == "int" || t == "int32"; }
 
 constexpr std::uintmax_t kMaxHeaderBytes = 1 << 20;
 // A polygon larger than this is not a mesh face we can use (and bounds what a list may claim).
@@ -135,64 +134,131 @@ Header readHeader(const std::string& path, std::uintmax_t fileSize) {
   return h;
 }
 
-// The data after the header, value by value.
+// PLY scalar types, decoded once from the header's names (not compared as strings per value).
+enum class Scalar : std::uint8_t { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
+Scalar scalarOf(const std::string& t) {
+  if (t == "char" || t == "int8") return Scalar::Int8;
+  if (t == "uchar" || t == "uint8") return Scalar::UInt8;
+  if (t == "short" || t == "int16") return Scalar::Int16;
+  if (t == "ushort" || t == "uint16") return Scalar::UInt16;
+  if (t == "int" || t == "int32") return Scalar::Int32;
+  if (t == "uint" || t == "uint32") return Scalar::UInt32;
+  if (t == "float" || t == "float32") return Scalar::Float32;
+  return Scalar::Float64;  // readHeader admitted only the names of typeSizes()
+}
+
+constexpr int sizeOf(Scalar s) {
+  switch (s) {
+    case Scalar::Int8: case Scalar::UInt8: return 1;
+    case Scalar::Int16: case Scalar::UInt16: return 2;
+    case Scalar::Int32: case Scalar::UInt32: case Scalar::Float32: return 4;
+    case Scalar::Float64: return 8;
+  }
+  return 8;
+}
+
+// Where a value sits, for a message; built only when one is needed.
+struct Where {
+  const std::string* element;
+  long long index;
+  std::string text() const { return *element + " " + std::to_string(index); }
+};
+
+// The data after the header, value by value, read through a fixed buffer (the file is never
+// held whole: a 131 MB file costs 1 MB here).
 class Body {
  public:
-  Body(const std::string& path, const Header& h) : path_(path), format_(h.format) {
-    std::ifstream in(path, std::ios::binary);
-    in.seekg(static_cast<std::streamoff>(h.bytes));
-    data_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  Body(const std::string& path, const Header& h)
+      : path_(path), format_(h.format), in_(std::fopen(path.c_str(), "rb")), buffer_(kChunk) {
+    if (!in_ || std::fseek(in_, static_cast<long>(h.bytes), SEEK_SET) != 0)
+      fail(path, "cannot open for reading (permission denied?)");
   }
-  /// The next value of PLY type `type`; `where` names it for the error if the data ends.
-  double read(const std::string& type, const std::string& where) {
-    if (format_ == Format::Ascii) {
-      while (pos_ < data_.size() && std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
-      const size_t start = pos_;
-      while (pos_ < data_.size() && !std::isspace(static_cast<unsigned char>(data_[pos_]))) ++pos_;
-      if (pos_ == start) fail(path_, "truncated PLY: the file ends in " + where);
-      const std::string_view token(data_.data() + start, pos_ - start);
-      double x = 0;
-      if (!parseNumber(token, x)) fail(path_, where + ": " + quote(token) + " is not a number");
-      if (!isFloatType(type)) {
-        if (x != std::floor(x)) fail(path_, where + ": " + quote(token) + " is not an integer");
-        // Within the declared type, as a binary file's value would be (found by fuzzing: a list
-        // count of 1e300 then overflowed a conversion to an integer).
-        const int bits = 8 * typeSizes().at(type);
-        const double lo = isSignedType(type) ? -std::ldexp(1.0, bits - 1) : 0.0;
-        const double hi = std::ldexp(1.0, isSignedType(type) ? bits - 1 : bits) - 1;
-        if (x < lo || x > hi) fail(path_, where + ": " + quote(token) + " is out of range for type " + type);
-      }
-      // A value declared float is what a float holds, as in a binary file.
-      return type == "float" || type == "float32" ? static_cast<double>(static_cast<float>(x)) : x;
-    }
-    const size_t n = static_cast<size_t>(typeSizes().at(type));
-    if (data_.size() - pos_ < n) fail(path_, "truncated PLY: the file ends in " + where);
-    unsigned char b[8];
-    std::memcpy(b, data_.data() + pos_, n);
+  ~Body() {
+    if (in_) std::fclose(in_);
+  }
+  Body(const Body&) = delete;
+  Body& operator=(const Body&) = delete;
+
+  /// The next value of PLY type `type` (`name` its header name, for messages); `where` names it
+  /// for the error if the data ends.
+  double read(Scalar type, const std::string& name, const Where& where) {
+    if (format_ == Format::Ascii) return readText(type, name, where);
+    const size_t n = static_cast<size_t>(sizeOf(type));
+    if (!ensure(n)) fail(path_, "truncated PLY: the file ends in " + where.text());
+    const unsigned char* b = buffer_.data() + pos_;
     pos_ += n;
     const bool little = format_ == Format::BinaryLittle;
     std::uint64_t u = 0;
     for (size_t k = 0; k < n; ++k) u |= std::uint64_t(b[little ? k : n - 1 - k]) << (8 * k);
-    if (type == "float" || type == "float32") {
-      float f;
-      const auto u32 = static_cast<std::uint32_t>(u);
-      std::memcpy(&f, &u32, 4);
-      return f;
+    switch (type) {
+      case Scalar::Float32: {
+        float f;
+        const auto u32 = static_cast<std::uint32_t>(u);
+        std::memcpy(&f, &u32, 4);
+        return f;
+      }
+      case Scalar::Float64: {
+        double d;
+        std::memcpy(&d, &u, 8);
+        return d;
+      }
+      case Scalar::Int8: return static_cast<std::int8_t>(u);
+      case Scalar::Int16: return static_cast<std::int16_t>(u);
+      case Scalar::Int32: return static_cast<std::int32_t>(u);
+      default: return static_cast<double>(u);
     }
-    if (type == "double" || type == "float64") {
-      double d;
-      std::memcpy(&d, &u, 8);
-      return d;
-    }
-    if (isSignedType(type) && (u >> (8 * n - 1)) & 1) return static_cast<double>(static_cast<std::int64_t>(u) - (std::int64_t(1) << (8 * n)));
-    return static_cast<double>(u);
   }
 
  private:
+  static constexpr size_t kChunk = 1 << 20;
+
+  // At least `n` unread bytes in the buffer (n <= 8); false at the end of the file.
+  bool ensure(size_t n) {
+    if (end_ - pos_ >= n) return true;
+    std::memmove(buffer_.data(), buffer_.data() + pos_, end_ - pos_);
+    end_ -= pos_;
+    pos_ = 0;
+    end_ += std::fread(buffer_.data() + end_, 1, buffer_.size() - end_, in_);
+    return end_ - pos_ >= n;
+  }
+
+  double readText(Scalar type, const std::string& name, const Where& where) {
+    auto space = [](unsigned char c) { return std::isspace(c) != 0; };
+    while (ensure(1) && space(buffer_[pos_])) ++pos_;
+    // The token (its first kMaxToken characters: parseNumber refuses longer ones anyway, and a
+    // message quotes 20); `long_` when it had more.
+    token_.clear();
+    bool tooLong = false;
+    while (ensure(1) && !space(buffer_[pos_])) {
+      if (token_.size() < kMaxToken) token_.push_back(static_cast<char>(buffer_[pos_]));
+      else tooLong = true;
+      ++pos_;
+    }
+    if (token_.empty()) fail(path_, "truncated PLY: the file ends in " + where.text());
+    double x = 0;
+    if (tooLong || !parseNumber(token_, x)) fail(path_, where.text() + ": " + quote(token_) + " is not a number");
+    if (type != Scalar::Float32 && type != Scalar::Float64) {
+      if (x != std::floor(x)) fail(path_, where.text() + ": " + quote(token_) + " is not an integer");
+      // Within the declared type, as a binary file's value would be (found by fuzzing: a list
+      // count of 1e300 then overflowed a conversion to an integer).
+      const bool isSigned = type == Scalar::Int8 || type == Scalar::Int16 || type == Scalar::Int32;
+      const int bits = 8 * sizeOf(type);
+      const double lo = isSigned ? -std::ldexp(1.0, bits - 1) : 0.0;
+      const double hi = std::ldexp(1.0, isSigned ? bits - 1 : bits) - 1;
+      if (x < lo || x > hi) fail(path_, where.text() + ": " + quote(token_) + " is out of range for type " + name);
+    }
+    // A value declared float is what a float holds, as in a binary file.
+    return type == Scalar::Float32 ? static_cast<double>(static_cast<float>(x)) : x;
+  }
+
+  static constexpr size_t kMaxToken = 80;
   std::string path_;
   Format format_;
-  std::vector<char> data_;
-  size_t pos_ = 0;
+  std::FILE* in_;
+  std::vector<unsigned char> buffer_;
+  size_t pos_ = 0, end_ = 0;
+  std::string token_;
 };
 
 int findProperty(const Element& e, const std::vector<std::string>& names, bool list) {
@@ -204,14 +270,15 @@ int findProperty(const Element& e, const std::vector<std::string>& names, bool l
 
 }  // namespace
 
-void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadReport& report) {
+void readPly(const std::string& path, std::uintmax_t fileSize, TriMesh& mesh, std::vector<std::uint8_t>& selected,
+             ReadReport& report) {
   const Header h = readHeader(path, fileSize);
   Body body(path, h);
-  std::vector<vcg::Point3d> positions;
-  std::vector<std::array<int, 3>> triangles;
-  std::vector<char> selected;
+  std::vector<Vec3>& positions = mesh.positions;
+  std::vector<Face>& triangles = mesh.faces;
   long long vertexCount = -1;
   std::vector<double> values;
+  std::vector<Scalar> types, countTypes;
   for (const Element& e : h.elements) {
     const bool isVertex = e.name == "vertex" && vertexCount < 0, isFace = e.name == "face" && triangles.empty();
     const int x = isVertex ? findProperty(e, {"x"}, false) : -1, y = isVertex ? findProperty(e, {"y"}, false) : -1,
@@ -223,28 +290,38 @@ void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadR
     if (isFace && e.count > 0 && idx < 0) fail(path, "PLY face element without a vertex_indices list");
     if (isFace && vertexCount < 0) fail(path, "PLY face element before the vertex element");
     if (isFace) report.hasFaceSelection = flags >= 0 || selectedProperty >= 0;
+    // The header proved the file can hold e.count entries of at least one byte each.
+    if (isVertex) positions.reserve(static_cast<size_t>(e.count));
+    if (isFace) triangles.reserve(static_cast<size_t>(e.count));
+    types.clear();
+    countTypes.clear();
+    for (const Property& prop : e.properties) {
+      types.push_back(scalarOf(prop.type));
+      countTypes.push_back(prop.countType.empty() ? Scalar::UInt8 : scalarOf(prop.countType));
+    }
+    const int nProperties = static_cast<int>(e.properties.size());
     for (long long i = 0; i < e.count; ++i) {
-      const std::string where = e.name + " " + std::to_string(i);
+      const Where where{&e.name, i};
       double p[3] = {0, 0, 0};
       bool sel = false;
       const size_t firstTriangle = triangles.size();
-      for (int k = 0; k < static_cast<int>(e.properties.size()); ++k) {
+      for (int k = 0; k < nProperties; ++k) {
         const Property& prop = e.properties[k];
         if (prop.countType.empty()) {
-          const double v = body.read(prop.type, where);
+          const double v = body.read(types[k], prop.type, where);
           if (k == x) p[0] = v;
           if (k == y) p[1] = v;
           if (k == z) p[2] = v;
-          if (k == flags) sel = sel || (std::fabs(v) < 0x1p62 && (static_cast<long long>(v) & VcgFace::SELECTED) != 0);
+          if (k == flags) sel = sel || (std::fabs(v) < 0x1p62 && (static_cast<long long>(v) & kPlyFaceSelected) != 0);
           if (k == selectedProperty) sel = sel || v != 0;
           continue;
         }
-        const double n = body.read(prop.countType, where);
+        const double n = body.read(countTypes[k], prop.countType, where);
         if (n < 0 || n > kMaxListSize)
-          fail(path, where + ": a list of " + numberText(n) + " entries (at most " +
+          fail(path, where.text() + ": a list of " + numberText(n) + " entries (at most " +
                          std::to_string(kMaxListSize) + " read here)");
         values.resize(static_cast<size_t>(n));
-        for (double& v : values) v = body.read(prop.type, where);
+        for (double& v : values) v = body.read(types[k], prop.type, where);
         if (k != idx) continue;
         if (values.size() < 3)
           fail(path, "face " + std::to_string(i) + " has " + std::to_string(values.size()) + " vertices (a face needs at least 3)");
@@ -255,26 +332,17 @@ void readPly(const std::string& path, std::uintmax_t fileSize, VcgMesh& m, ReadR
           else if (v != std::floor(v))
             fail(path, "face " + std::to_string(i) + " refers to vertex " + numberText(v) + " (not a whole number)");
         if (values.size() > 3) ++report.polygonsTriangulated;
-        for (size_t c = 1; c + 1 < values.size(); ++c) {
-          triangles.push_back({int(values[0]), int(values[c]), int(values[c + 1])});
-          selected.push_back(0);
-        }
+        for (size_t c = 1; c + 1 < values.size(); ++c) triangles.push_back({int(values[0]), int(values[c]), int(values[c + 1])});
       }
       if (isVertex) {
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
           fail(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
         positions.emplace_back(p[0], p[1], p[2]);
       }
+      if (isFace && report.hasFaceSelection) selected.resize(triangles.size(), 0);
       if (sel) std::fill(selected.begin() + static_cast<std::ptrdiff_t>(firstTriangle), selected.end(), 1);
     }
     if (isVertex) vertexCount = e.count;
-  }
-  auto vi = vcg::tri::Allocator<VcgMesh>::AddVertices(m, positions.size());
-  for (const auto& p : positions) (vi++)->P() = p;
-  auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, triangles.size());
-  for (size_t t = 0; t < triangles.size(); ++t, ++fi) {
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[triangles[t][k]];
-    if (selected[t]) fi->SetS();
   }
 }
 

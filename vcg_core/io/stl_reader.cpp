@@ -16,18 +16,17 @@ namespace {
 
 constexpr std::uintmax_t kLabel = 80, kTriangleBytes = 50;
 
-void addTriangles(VcgMesh& m, const std::vector<vcg::Point3d>& corners) {
-  auto vi = vcg::tri::Allocator<VcgMesh>::AddVertices(m, corners.size());
-  for (const auto& p : corners) (vi++)->P() = p;
-  auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, corners.size() / 3);
-  for (size_t t = 0; t < corners.size() / 3; ++t, ++fi)
-    for (int k = 0; k < 3; ++k) fi->V(k) = &m.vert[3 * t + k];
+// Every corner its own vertex: triangle t is (3t, 3t + 1, 3t + 2).
+void addTriangles(TriMesh& mesh) {
+  const int n = static_cast<int>(mesh.positions.size() / 3);
+  mesh.faces.resize(static_cast<size_t>(n));
+  for (int t = 0; t < n; ++t) mesh.faces[t] = {3 * t, 3 * t + 1, 3 * t + 2};
 }
 
-void readBinary(const std::string& path, VcgMesh& m, std::uint32_t count) {
+void readBinary(const std::string& path, TriMesh& mesh, std::uint32_t count) {
   std::ifstream in(path, std::ios::binary);
   in.seekg(kLabel + 4);
-  std::vector<vcg::Point3d> corners;
+  std::vector<Vec3>& corners = mesh.positions;
   corners.reserve(3 * size_t(count));
   unsigned char rec[kTriangleBytes];
   for (std::uint32_t t = 0; t < count; ++t) {
@@ -43,14 +42,14 @@ void readBinary(const std::string& path, VcgMesh& m, std::uint32_t count) {
       corners.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
   }
-  addTriangles(m, corners);
+  addTriangles(mesh);
 }
 
-void readAscii(const std::string& path, VcgMesh& m) {
+void readAscii(const std::string& path, TriMesh& mesh) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
   long long lineNo = 0;
-  std::vector<vcg::Point3d> corners;
+  std::vector<Vec3>& corners = mesh.positions;
   int inLoop = -1;  // corners read in the current loop; -1 outside a loop
   auto at = [&] { return " (line " + std::to_string(lineNo) + ")"; };
   while (std::getline(in, line)) {
@@ -79,12 +78,12 @@ void readAscii(const std::string& path, VcgMesh& m) {
     }
   }
   if (inLoop >= 0) fail(path, "truncated ASCII STL: the file ends inside facet " + std::to_string(corners.size() / 3));
-  addTriangles(m, corners);
+  addTriangles(mesh);
 }
 
 }  // namespace
 
-void readStl(const std::string& path, VcgMesh& m) {
+void readStl(const std::string& path, TriMesh& mesh) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   std::ifstream in(path, std::ios::binary);
@@ -94,10 +93,10 @@ void readStl(const std::string& path, VcgMesh& m) {
   if (got == sizeof head) {
     const auto* b = reinterpret_cast<const unsigned char*>(head + kLabel);
     const std::uint32_t count = b[0] | (b[1] << 8) | (b[2] << 16) | (std::uint32_t(b[3]) << 24);
-    if (size == kLabel + 4 + kTriangleBytes * std::uintmax_t(count)) return readBinary(path, m, count);
+    if (size == kLabel + 4 + kTriangleBytes * std::uintmax_t(count)) return readBinary(path, mesh, count);
   }
   const auto text = splitTokens(std::string_view(head, got));
-  if (!text.empty() && text[0] == "solid") return readAscii(path, m);
+  if (!text.empty() && text[0] == "solid") return readAscii(path, mesh);
   if (got < sizeof head) fail(path, "malformed STL: " + std::to_string(size) + " bytes, too short for a binary STL header and not ASCII STL");
   const auto* b = reinterpret_cast<const unsigned char*>(head + kLabel);
   const std::uint32_t count = b[0] | (b[1] << 8) | (b[2] << 16) | (std::uint32_t(b[3]) << 24);

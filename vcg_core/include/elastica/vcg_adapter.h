@@ -108,10 +108,26 @@ void writePositions(VcgMeshT& m, const std::vector<Vec3>& p) {
   }
 }
 
+/// MeshLab's "Colorize by vertex quality" ramp over `values` (red = low through yellow, green,
+/// cyan to blue = high), spread over their 2–98 % percentiles so a few spikes do not wash out the
+/// picture: one colour per value.
+inline std::vector<vcg::Color4b> qualityColorRamp(const std::vector<double>& values) {
+  std::vector<vcg::Color4b> colors(values.size());
+  if (values.empty()) return colors;
+  std::vector<double> sorted = values;
+  auto percentile = [&](double q) {
+    auto it = sorted.begin() + static_cast<long>(q * double(sorted.size() - 1));
+    std::nth_element(sorted.begin(), it, sorted.end());
+    return *it;
+  };
+  const double lo = percentile(0.02), hi = percentile(0.98);
+  for (size_t i = 0; i < values.size(); ++i) colors[i].SetColorRamp(float(lo), float(hi), float(values[i]));
+  return colors;
+}
+
 /// Stores curvatures on the live vertices of `m`, in the reported sign convention (H = +1/r on an
 /// outward sphere): per-vertex float attributes "mean_curvature" and "gaussian_curvature",
-/// quality = H, and MeshLab's "Colorize by vertex quality" ramp (red = low H through yellow, green,
-/// cyan to blue = high H), over the 2–98 % percentiles so a few spikes do not wash out the picture.
+/// quality = H, and the colour ramp by H (qualityColorRamp).
 /// `reportedH` is already in the reported sign (MeshCurvature::H; sign_convention.h).
 template <class VcgMeshT>
 void storeCurvature(VcgMeshT& m, const std::vector<double>& reportedH, const std::vector<double>& K) {
@@ -126,17 +142,10 @@ void storeCurvature(VcgMeshT& m, const std::vector<double>& reportedH, const std
     ++k;
   }
   if (reportedH.empty()) return;
-  std::vector<double> sorted = reportedH;
-  auto percentile = [&](double q) {
-    auto it = sorted.begin() + static_cast<long>(q * double(sorted.size() - 1));
-    std::nth_element(sorted.begin(), it, sorted.end());
-    return *it;
-  };
-  const double lo = percentile(0.02), hi = percentile(0.98);
-  for (auto& v : m.vert) {
-    if (v.IsD()) continue;
-    v.C().SetColorRamp(float(lo), float(hi), float(v.Q()));
-  }
+  const std::vector<vcg::Color4b> colors = qualityColorRamp(reportedH);
+  k = 0;
+  for (auto& v : m.vert)
+    if (!v.IsD()) v.C() = colors[k++];
 }
 
 }  // namespace elastica
