@@ -93,5 +93,5 @@ TEST(BoundarySlide, ProjectsOntoTheRecordedPolyline) {
   slider.slide(topo, p, sliding, 0.0);
   EXPECT_NEAR((p[v] - Vec3(3.25, 0, 0)).norm(), 0, 1e-12);
   for (int w = 0; w < grid.vertexCount(); ++w)
-    if (w != v) EXPECT_TRUE(bitEqual(p[w], grid.positions[w])) << w;
+    if (w != v) { EXPECT_TRUE(bitEqual(p[w], grid.positions[w])) << w; }
 }

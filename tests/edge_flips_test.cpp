@@ -36,13 +36,13 @@ TEST(EdgeFlips, MakeTheMovingRegionDelaunay) {
     const int vs[4] = {t.edgeVertices(e)[0], t.edgeVertices(e)[1], m.faces[oc[0] / 3][oc[0] % 3], m.faces[oc[1] / 3][oc[1] % 3]};
     bool allMovable = true;
     for (int v : vs) allMovable = allMovable && movable[v];
-    if (allMovable) EXPECT_LE(g.cornerAngle(oc[0]) + g.cornerAngle(oc[1]), M_PI + 1e-6) << "edge " << e;
+    if (allMovable) { EXPECT_LE(g.cornerAngle(oc[0]) + g.cornerAngle(oc[1]), M_PI + 1e-6) << "edge " << e; }
   }
   // Faces with a fixed vertex are untouched.
   for (int f = 0; f < m.faceCount(); ++f) {
     bool fixedVertex = false;
     for (int v : before.faces[f]) fixedVertex = fixedVertex || !movable[v];
-    if (fixedVertex) EXPECT_EQ(m.faces[f], before.faces[f]) << f;
+    if (fixedVertex) { EXPECT_EQ(m.faces[f], before.faces[f]) << f; }
   }
 }
 

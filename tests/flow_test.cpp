@@ -100,12 +100,12 @@ TEST(Flow, FixedVerticesAreBitIdentical) {
     for (int v = 0; v < m.vertexCount(); ++v) {
       const Vec3& p = before.positions[v];
       const bool inside = std::abs(p.x() - 8) < 3.5 && std::abs(p.y() - 8) < 3.5;
-      if (!inside) EXPECT_EQ(std::memcmp(m.positions[v].data(), p.data(), sizeof(Vec3)), 0) << "vertex " << v;
+      if (!inside) { EXPECT_EQ(std::memcmp(m.positions[v].data(), p.data(), sizeof(Vec3)), 0) << "vertex " << v; }
       moved += m.positions[v] != p;
     }
     EXPECT_GT(moved, 20);
     for (int f = 0; f < m.faceCount(); ++f)
-      if (!selected[f]) EXPECT_EQ(m.faces[f], before.faces[f]) << "face " << f;
+      if (!selected[f]) { EXPECT_EQ(m.faces[f], before.faces[f]) << "face " << f; }
   }
 }
 
@@ -132,8 +132,8 @@ TEST(Flow, SlidingBoundaryStaysOnTheBoundary) {
     const Vec3& p0 = before.positions[v];
     const Vec3& p = m.positions[v];
     const bool onX = p0.x() == 0 || p0.x() == 8, onY = p0.y() == 0 || p0.y() == 8;
-    if (onX) EXPECT_NEAR(p.x(), p0.x(), 1e-12);
-    if (onY) EXPECT_NEAR(p.y(), p0.y(), 1e-12);
+    if (onX) { EXPECT_NEAR(p.x(), p0.x(), 1e-12); }
+    if (onY) { EXPECT_NEAR(p.y(), p0.y(), 1e-12); }
     if (onX || onY) {
       EXPECT_NEAR(p.z(), 0.0, 1e-12);
       slid += (p - p0).norm() > 1e-3;

@@ -204,7 +204,7 @@ TEST(HoleFilling, FlowLimitsHoldOverAllHoles) {
   r = fillHoles(m, opt);
   ASSERT_EQ(r.filledCount(), 2);
   for (const HoleReport& h : r.holes)
-    if (h.filled) EXPECT_EQ(h.stop, StopReason::MaxSeconds) << h.reason;
+    if (h.filled) { EXPECT_EQ(h.stop, StopReason::MaxSeconds) << h.reason; }
   EXPECT_LT(r.seconds, 5.0);  // a generous bound on a 0.5 s limit
 }
 

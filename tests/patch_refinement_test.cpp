@@ -104,7 +104,7 @@ TEST(PatchRefinement, BringsTheFlatPatchToTheSurroundingDensity) {
     EXPECT_LE(len, 2.0) << "edge " << e;
     sum += len;
     ++edges;
-    if (inner) EXPECT_LE(g.cornerAngle(oc[0]) + g.cornerAngle(oc[1]), M_PI + 1e-9) << "edge " << e;
+    if (inner) { EXPECT_LE(g.cornerAngle(oc[0]) + g.cornerAngle(oc[1]), M_PI + 1e-9) << "edge " << e; }
   }
   EXPECT_NEAR(sum / edges, 1.0, 0.2);
 }
