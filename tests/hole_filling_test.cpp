@@ -10,7 +10,6 @@
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
 #include "restoration/hole_boundary.h"
-#include "restoration/hole_triangulation.h"
 
 #include <gtest/gtest.h>
 
@@ -21,76 +20,13 @@
 namespace elastica {
 namespace {
 
-// Removes the faces for which `cut(centroid)` is true and the vertices left without a face.
-TriMesh cutAway(const TriMesh& m, const std::function<bool(const Vec3&)>& cut) {
-  TriMesh out;
-  std::vector<int> index(m.positions.size(), -1);
-  for (const Face& f : m.faces) {
-    const Vec3 c = (m.positions[f[0]] + m.positions[f[1]] + m.positions[f[2]]) / 3.0;
-    if (cut(c)) continue;
-    Face g;
-    for (int k = 0; k < 3; ++k) {
-      if (index[f[k]] < 0) {
-        index[f[k]] = out.vertexCount();
-        out.positions.push_back(m.positions[f[k]]);
-      }
-      g[k] = index[f[k]];
-    }
-    out.faces.push_back(g);
-  }
-  return out;
-}
-
+using test::cutAway;
 using test::selfIntersections;
 
 // The polar cap of a 2,562-vertex unit icosphere within `degrees` of +z, cut away.
 TriMesh sphereWithCapHole(double degrees) {
   const double c = std::cos(degrees * M_PI / 180);
   return cutAway(shapes::icosphere(1, 4), [&](const Vec3& p) { return p.z() / p.norm() > c; });
-}
-
-TEST(HoleBoundary, LoopsRunAgainstTheirFaces) {
-  const TriMesh m = shapes::grid(4, 3);
-  const Topology topo(m.vertexCount(), m.faces);
-  const auto loops = findHoleLoops(topo);
-  ASSERT_EQ(loops.size(), 1u);
-  EXPECT_EQ(loops[0].edgeCount(), 2 * (4 + 3));
-  EXPECT_FALSE(loops[0].pinched);
-  // A grid with +z normals is counter-clockwise seen from +z; its hole (the outside) runs clockwise.
-  double signedArea = 0;
-  const auto& v = loops[0].vertices;
-  for (std::size_t i = 0; i < v.size(); ++i) {
-    const Vec3& a = m.positions[v[i]];
-    const Vec3& b = m.positions[v[(i + 1) % v.size()]];
-    signedArea += a.x() * b.y() - b.x() * a.y();
-  }
-  EXPECT_LT(signedArea, 0);
-}
-
-TEST(HoleTriangulation, ClosesAPlanarHoleConsistently) {
-  const TriMesh cut = cutAway(shapes::grid(8, 8), [](const Vec3& p) { return (p - Vec3(4, 4, 0)).norm() < 2.5; });
-  const Topology topo(cut.vertexCount(), cut.faces);
-  const auto loops = findHoleLoops(topo);
-  ASSERT_EQ(loops.size(), 2u);  // the grid's rim and the hole
-  const HoleLoop& hole = loops[0].edgeCount() < loops[1].edgeCount() ? loops[0] : loops[1];
-  auto edgeExists = [&](int a, int b) {
-    for (int k = topo.ringBegin(a); k < topo.ringEnd(a); ++k) {
-      if (topo.ringVertex(k) == b) return true;
-    }
-    return false;
-  };
-  const auto tris = triangulateHole(cut.positions, hole, edgeExists);
-  ASSERT_TRUE(tris.has_value());
-  EXPECT_EQ(static_cast<int>(tris->size()), hole.edgeCount() - 2);
-  TriMesh closed = cut;
-  closed.faces.insert(closed.faces.end(), tris->begin(), tris->end());
-  const Topology after(closed.vertexCount(), closed.faces);  // throws on a non-manifold edge
-  EXPECT_EQ(after.inconsistentEdgeCount(), 0);
-  EXPECT_EQ(after.boundaryEdgeCount(), topo.boundaryEdgeCount() - hole.edgeCount());
-  for (const Face& f : *tris) {  // a flat hole is filled flat, facing +z like the grid
-    const Vec3 n = (closed.positions[f[1]] - closed.positions[f[0]]).cross(closed.positions[f[2]] - closed.positions[f[0]]);
-    EXPECT_GT(n.z(), 0);
-  }
 }
 
 TEST(HoleFilling, RestoresASphereCap) {
@@ -269,7 +205,7 @@ TEST(HoleFilling, FlowLimitsHoldOverAllHoles) {
   r = fillHoles(m, opt);
   ASSERT_EQ(r.filledCount(), 2);
   for (const HoleReport& h : r.holes)
-    if (h.filled) EXPECT_EQ(h.stop, StopReason::MaxSeconds) << h.reason;
+    if (h.filled) { EXPECT_EQ(h.stop, StopReason::MaxSeconds) << h.reason; }
   EXPECT_LT(r.seconds, 5.0);  // a generous bound on a 0.5 s limit
 }
 

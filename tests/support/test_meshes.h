@@ -5,6 +5,7 @@
 #include <elastica/types.h>
 
 #include <cstdint>
+#include <functional>
 #include <random>
 #include <vector>
 
@@ -35,6 +36,26 @@ inline TriMesh jittered(TriMesh m, double amplitude, unsigned seed = 1) {
   std::uniform_real_distribution<double> u(-amplitude, amplitude);
   for (Vec3& p : m.positions) p += Vec3(u(rng), u(rng), u(rng));
   return m;
+}
+
+/// `m` without the faces for which `cut(centroid)` is true and the vertices left without a face.
+inline TriMesh cutAway(const TriMesh& m, const std::function<bool(const Vec3&)>& cut) {
+  TriMesh out;
+  std::vector<int> index(m.positions.size(), -1);
+  for (const Face& f : m.faces) {
+    const Vec3 c = (m.positions[f[0]] + m.positions[f[1]] + m.positions[f[2]]) / 3.0;
+    if (cut(c)) continue;
+    Face g;
+    for (int k = 0; k < 3; ++k) {
+      if (index[f[k]] < 0) {
+        index[f[k]] = out.vertexCount();
+        out.positions.push_back(m.positions[f[k]]);
+      }
+      g[k] = index[f[k]];
+    }
+    out.faces.push_back(g);
+  }
+  return out;
 }
 
 }  // namespace elastica::test

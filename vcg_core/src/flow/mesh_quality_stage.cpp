@@ -1,0 +1,147 @@
+#include "flow/mesh_quality_stage.h"
+#include "flow/constraints.h"
+#include "mesh/self_intersection.h"
+#include "restoration/patch_remeshing.h"
+
+#include <elastica/mesh_curvature.h>
+#include <elastica/topology.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace elastica {
+namespace {
+
+constexpr int kVerticesPerHandle = 100;
+// Curvature-adaptive remeshing aims at κ·ℓ = 0.4, below the 0.6 above which the discrete energy
+// of a cage's flow was seen to fall below the continuum's (docs/figures.md), and refines at most
+// 8× below the region's mean edge length.
+constexpr double kTargetCurvatureTimesEdge = 0.4, kMaxRefinement = 8;
+constexpr int kMaxGrowth = 8;  // a remeshing leaves at most 8× the vertices (+1000)
+
+VertexRoles rolesOf(const Topology& topo, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
+  return assignRoles(topo, &selection, mode);
+}
+
+// Faces whose three vertices are all free: the region a remeshing may rewrite.
+std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& roles) {
+  std::vector<std::uint8_t> region(mesh.faces.size(), 0);
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Face& t = mesh.faces[f];
+    region[f] = roles.free[t[0]] && roles.free[t[1]] && roles.free[t[2]];
+  }
+  return region;
+}
+
+double cornerAngle(const Vec3& at, const Vec3& b, const Vec3& c) {
+  const Vec3 u = b - at, v = c - at;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+}  // namespace
+
+int workingResolutionFloor(const TriMesh& mesh) {
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  int used = 0;
+  for (int v = 0; v < topo.vertexCount(); ++v) used += !topo.isIsolatedVertex(v);
+  int genus = 0;
+  if (topo.boundaryEdgeCount() == 0) genus = std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
+  return kVerticesPerHandle * (genus + 1);
+}
+
+int movingVertexCount(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  return rolesOf(topo, selection, mode).freeCount;
+}
+
+double smallestMovingAngle(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  const std::vector<std::uint8_t> region = movingFaces(mesh, rolesOf(topo, selection, mode));
+  double smallest = M_PI;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    if (!region[f]) continue;
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k)
+      smallest = std::min(smallest, cornerAngle(mesh.positions[t[k]], mesh.positions[t[(k + 1) % 3]],
+                                                mesh.positions[t[(k + 2) % 3]]));
+  }
+  return smallest * 180 / M_PI;
+}
+
+double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& selection,
+                                       BoundaryMode mode) {
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  const VertexRoles roles = rolesOf(topo, selection, mode);
+  const std::vector<double> kappa = largestPrincipalCurvature(mesh);
+  double largest = 0;
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    if (!roles.free[v] || topo.valence(v) == 0) continue;
+    double ell = 0;
+    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k)
+      ell += (mesh.positions[topo.ringVertex(k)] - mesh.positions[v]).norm();
+    largest = std::max(largest, kappa[v] * ell / topo.valence(v));
+  }
+  return largest;
+}
+
+std::vector<double> largestPrincipalCurvature(const TriMesh& mesh) {
+  const MeshCurvature c = measureCurvature(mesh);
+  std::vector<double> kappa(mesh.positions.size(), 0);
+  for (std::size_t v = 0; v < kappa.size(); ++v)
+    kappa[v] = std::abs(c.H[v]) + std::sqrt(std::max(c.H[v] * c.H[v] - c.K[v], 0.0));
+  return kappa;
+}
+
+bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, BoundaryMode mode,
+                        bool curvatureAdaptive) {
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  const VertexRoles roles = rolesOf(topo, selection, mode);
+  std::vector<std::uint8_t> region = movingFaces(mesh, roles);
+  std::vector<double> areas;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    if (!region[f]) continue;
+    const Face& t = mesh.faces[f];
+    areas.push_back(0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm());
+  }
+  if (areas.empty()) return false;
+  // An equilateral triangle of the median face area (the mean would follow a refined neck down)
+  // has edge sqrt(4A / √3).
+  std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
+  const double target = std::sqrt(4 * areas[areas.size() / 2] / std::sqrt(3.0));
+  if (!(target > 0)) return false;
+
+  const bool crossedBefore = selfIntersects(mesh);
+  TriMesh remeshed = mesh;
+  std::vector<std::uint8_t> movable = roles.free;
+  std::vector<double> sigma(mesh.positions.size(), target);
+  if (curvatureAdaptive) {
+    // Where the surface bends within a few edges (a neck, a tight handle), the discrete energy
+    // underestimates what bending costs: edges there are held to kMaxCurvatureTimesEdge / κ,
+    // κ the largest principal curvature over the vertex's one-ring (so both sides of a neck agree).
+    const std::vector<double> kappa = largestPrincipalCurvature(mesh);
+    for (int v = 0; v < topo.vertexCount(); ++v) {
+      double k = kappa[v];
+      for (int r = topo.ringBegin(v); r < topo.ringEnd(v); ++r) k = std::max(k, kappa[topo.ringVertex(r)]);
+      if (k > 0) sigma[v] = std::clamp(kTargetCurvatureTimesEdge / k, target / kMaxRefinement, target);
+    }
+  }
+  const std::vector<std::uint8_t> regionBefore = region;
+  PatchRemeshingOptions options;
+  // Curvature-adaptive edges and a cage's long slivers need more vertices, but not without end.
+  options.maxVertices = kMaxGrowth * mesh.vertexCount() + 1000;
+  remeshRegion(remeshed, region, sigma, movable, options);
+  if (!crossedBefore && selfIntersects(remeshed)) return false;
+
+  // Faces outside the region keep their slots (remeshRegion refills dead slots from the end only
+  // while no face outside the region would move); region faces are selected.
+  if (!selection.empty()) {
+    std::vector<std::uint8_t> next(remeshed.faces.size(), 1);
+    for (std::size_t f = 0; f < next.size(); ++f)
+      if (!region[f]) next[f] = selection[f];
+    selection.swap(next);
+  }
+  mesh = std::move(remeshed);
+  return true;
+}
+
+}  // namespace elastica

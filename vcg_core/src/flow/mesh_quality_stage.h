@@ -1,0 +1,53 @@
+// Keeping the triangles fit for the discrete operators while a flow runs: the paper's future work
+// (dynamic connectivity, its ref. [7]) as stages of the semi-implicit pipeline. Measured on coarse
+// polygon cages (docs/figures.md, "Cages from elsewhere"):
+//  - a flow on a few dozen vertices is meaningless: the discrete energy of such a mesh is far below
+//    the continuum's, and what the flow learns there (a handle pinched to a thin neck) is locked in
+//    by subdivision. A 5×5 quad torus flowed from 25 vertices ended as a pinched torus (E 100);
+//    subdivided twice before its first flow it reaches the Clifford torus (E 78.7, 8π² = 79.0);
+//  - long thin triangles (quads split along one diagonal, CAD slivers) break the cotangent
+//    operators: genus-2 and genus-3 block cages self-intersected (E 312 and 436); remeshed to even
+//    triangles they reach 112–113 and 142 (the genus-2 minimiser has about 112.8).
+#pragma once
+
+#include <elastica/flow.h>
+#include <elastica/types.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace elastica {
+
+/// Free vertices the first flow stage wants: 100 per handle plus 100 (the genus from the Euler
+/// characteristic of a closed mesh; a region with a border counts as a disk). Below it, the
+/// schedule subdivides before flowing, within the levels the caller asked for.
+int workingResolutionFloor(const TriMesh& mesh);
+
+/// How many vertices would move (FlowState's free vertices) for this selection and boundary mode.
+int movingVertexCount(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode);
+
+/// Smallest corner angle, in degrees, of the faces whose three vertices all move (180 if none).
+double smallestMovingAngle(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode);
+
+/// The largest principal curvature |H| + √max(H² − K, 0) at each vertex (mixed areas).
+std::vector<double> largestPrincipalCurvature(const TriMesh& mesh);
+
+/// max over moving vertices of κ · (mean length of its edges): above about 0.6 the discrete energy
+/// no longer sees what bending there costs (a neck can pinch for free).
+double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& selection,
+                                       BoundaryMode mode);
+
+/// Isotropic remeshing (split, collapse, flip, tangential relaxation: restoration/patch_remeshing.h)
+/// of the faces whose three vertices all move, toward the edge length of an equilateral triangle
+/// of the region's mean face area (so the vertex count stays about the same) or, with
+/// `curvatureAdaptive`, toward 0.4/κ where that is shorter (κ the largest principal curvature
+/// around the vertex; at most 8× shorter): a flowed surface's necks get the edges that let the
+/// energy see them. Not for an unflowed cage, whose curvature sits in its creases. Vertices that do not
+/// move, and every face touching one, keep their positions and values bit for bit; vertices are
+/// renumbered only where movable ones were removed. `selection` (one byte per face, or empty for
+/// the whole mesh) follows the faces. The remeshing is undone, and false returned, if it would
+/// make faces cross that did not cross before (mesh/self_intersection.h).
+bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, BoundaryMode mode,
+                        bool curvatureAdaptive);
+
+}  // namespace elastica
