@@ -5,6 +5,7 @@
 #include <elastica/io/mesh_reader.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/vcg_adapter.h>
+#include <elastica/vcg_mesh.h>
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -26,9 +27,9 @@ int main(int argc, char** argv) {
   }
   for (int i = 1; i < argc; ++i) {
     try {
+      const TriMesh m = io::readMesh(argv[i]).mesh;
       VcgMesh vm;
-      io::readMesh(argv[i], vm);
-      const TriMesh m = toTriMesh(vm);
+      fromTriMesh(m, vm);
       const MeshCurvature mixed = measureCurvature(m);
       CurvatureMeasureOptions paper;
       paper.area = VertexArea::Barycentric;
