@@ -27,7 +27,8 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
                  "elastica (default: F = -Lap H - 2H(H^2-K)), lmc (F = -Lap H) or bilaplacian (P -= tau U0^2 P)")
       ->transform(CLI::CheckedTransformer(app::nameMap<FlowType>(), CLI::ignore_case));
   cmd.add_option("--scheme", opt.scheme,
-                 "explicit (the paper's step; fair's default) or semi-implicit (adaptive, implicit in the 4th-order part; fill's default)")
+                 "semi-implicit (default: adaptive, implicit in the 4th-order part, with remeshing) or explicit "
+                 "(the paper's step; the bilaplacian flow's only scheme)")
       ->transform(CLI::CheckedTransformer(app::nameMap<Scheme>(), CLI::ignore_case));
   cmd.add_option("--max-steps", opt.maxSteps, "step limit over all stages")
       ->capture_default_str()
@@ -49,10 +50,16 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
   cmd.add_option("--step-factor", opt.stepFactor, "explicit step tau = factor * A_min^2 (paper: 1/150)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  // Two options belong to one scheme each: asking for one with the other scheme is an error,
-  // not a silent ignore (--energy-tol means the same in both).
+  // Some options belong to one scheme: asking for one with the other scheme is an error, not a
+  // silent ignore (--energy-tol means the same in both).
   CLI::App* command = &cmd;
   cmd.parse_complete_callback([command, &opt] {
+    // The bilaplacian comparison flow is the paper's explicit iteration: without --scheme it runs
+    // explicit rather than failing on the default.
+    if (opt.flow == FlowType::Bilaplacian && command->count("--scheme") == 0) opt.scheme = Scheme::Explicit;
+    const CLI::Option* noRemesh = command->get_option_no_throw("--no-remesh");  // fair's, not fill's
+    if (opt.scheme == Scheme::Explicit && noRemesh && noRemesh->count() > 0)
+      throw CLI::ValidationError("--no-remesh", "applies to the semi-implicit scheme only (the explicit one never remeshes)");
     if (opt.scheme == Scheme::Explicit && command->count("--shape-tol") > 0)
       throw CLI::ValidationError("--shape-tol", "applies to the semi-implicit scheme only (add --scheme semi-implicit)");
     if (opt.scheme == Scheme::SemiImplicit && command->count("--step-factor") > 0)
@@ -67,7 +74,12 @@ void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt) {
       ->check(parameterRange(app::FilterId::Fairing, "subdivisionLevels"));
   cmd.add_option("--target-edge", opt.targetEdgeLength, "stop subdividing once the mean edge length is at most this")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_flag("--remesh", opt.flipEdges, "dynamic connectivity: flip non-Delaunay edges among moving vertices at every check");
+  cmd.add_flag("--remesh", opt.flipEdges,
+               "explicit scheme: dynamic connectivity, flip non-Delaunay edges among moving vertices at every check "
+               "(the semi-implicit scheme does this and more unless --no-remesh)");
+  cmd.add_flag("--no-remesh{false}", opt.remesh,
+               "semi-implicit scheme: keep the connectivity (no working-resolution floor, no isotropic or "
+               "curvature-adaptive remeshing, no edge flips, no embedding guard)");
   cmd.add_option("--boundary", opt.boundary,
                  "fixed (default: boundary and next row clamped, G1) or slide (boundary vertices slide along it)")
       ->transform(CLI::CheckedTransformer(app::nameMap<BoundaryMode>(), CLI::ignore_case));

@@ -33,21 +33,23 @@ run() {
 # Every other face of the bunny's first 400: a scattered selection (most vertices stay fixed).
 printf '%s\n' $(seq 0 2 400) >faces.txt
 
-run fair_explicit        fair noisy.ply -o fair_explicit.ply --max-steps 3000
+run fair_explicit        fair noisy.ply -o fair_explicit.ply --scheme explicit --max-steps 3000
 run fair_semi            fair noisy.ply -o fair_semi.ply --scheme semi-implicit
-run fair_lmc             fair noisy.ply -o fair_lmc.ply --flow lmc --max-steps 2000
+run fair_lmc             fair noisy.ply -o fair_lmc.ply --flow lmc --scheme explicit --max-steps 2000
 run fair_lmc_semi        fair noisy.ply -o fair_lmc_semi.ply --flow lmc --scheme semi-implicit --max-steps 200
 run fair_bilaplacian     fair noisy.ply -o fair_bilaplacian.ply --flow bilaplacian --max-steps 2000
-run fair_subdivide       fair noisy.ply -o fair_subdivide.ply --subdivide 1 --max-steps 4000
+run fair_subdivide       fair noisy.ply -o fair_subdivide.ply --scheme explicit --subdivide 1 --max-steps 4000
 run fair_subdivide_semi  fair noisy.ply -o fair_subdivide_semi.ply --scheme semi-implicit --subdivide 1
 run fair_torus_semi      fair torus.ply -o fair_torus_semi.ply --scheme semi-implicit --max-steps 150
 run fair_frame_remesh    fair frame.ply -o fair_frame_remesh.ply --scheme semi-implicit --subdivide 1 --remesh --max-steps 300
-run fair_frame_explicit  fair frame.ply -o fair_frame_explicit.ply --remesh --max-steps 3000 --h2k lambda --area barycentric
+run fair_frame_explicit  fair frame.ply -o fair_frame_explicit.ply --scheme explicit --remesh --max-steps 3000 --h2k lambda --area barycentric
 run fair_bunny_selected  fair "$root/data/bunny.ply" -o fair_bunny_selected.ply --selected-faces faces.txt --scheme semi-implicit
-run fair_bunny_sel_expl  fair "$root/data/bunny.ply" -o fair_bunny_sel_expl.ply --selected-faces faces.txt --max-steps 2000 --no-tangential
-run fair_slide           fair "$root/data/bunny_flank_hole.ply" -o fair_slide.ply --boundary slide --max-steps 1500
+run fair_bunny_sel_expl  fair "$root/data/bunny.ply" -o fair_bunny_sel_expl.ply --selected-faces faces.txt --scheme explicit --max-steps 2000 --no-tangential
+run fair_slide           fair "$root/data/bunny_flank_hole.ply" -o fair_slide.ply --scheme explicit --boundary slide --max-steps 1500
 run fair_slide_semi      fair "$root/data/bunny_flank_hole.ply" -o fair_slide_semi.ply --boundary slide --scheme semi-implicit --max-steps 60
-run fair_color           fair noisy.ply -o fair_color.ply --max-steps 500 --color-by-mean-curvature --ascii
+run fair_color           fair noisy.ply -o fair_color.ply --scheme explicit --max-steps 500 --color-by-mean-curvature --ascii
+run fair_cage_torus      fair "$root/data/cages/torus_quad_5x5.off" -o fair_cage_torus.ply --subdivide 2
+run fair_cage_no_remesh  fair "$root/data/cages/hex_nut.off" -o fair_cage_no_remesh.ply --no-remesh --max-steps 100
 run fill_default         fill "$root/data/bunny_flank_hole.ply" -o fill_default.ply --color-by-mean-curvature
 run fill_lmc             fill "$root/data/bunny_flank_hole.ply" -o fill_lmc.ply --flow lmc
 run fill_explicit        fill "$root/data/bunny_flank_hole.ply" -o fill_explicit.ply --scheme explicit --max-steps 3000

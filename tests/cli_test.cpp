@@ -1,6 +1,7 @@
 // The `elastica` program end to end: generated and bundled real meshes, output files, exit codes.
 #include "file_helpers.h"
 #include "run_elastica.h"
+#include "shape_measures.h"
 
 #include <elastica/curvature.h>
 #include <elastica/energy.h>
@@ -137,16 +138,10 @@ TEST(Cli, FairTurnsNoisySphereRound) {
   VcgMesh vm;
   io::readMesh(dir.file("f.ply"), vm);
   const TriMesh m = toTriMesh(vm);
-  ASSERT_EQ(m.vertexCount(), 642);
-  Vec3 c = Vec3::Zero();
-  for (const Vec3& p : m.positions) c += p;
-  c /= m.vertexCount();
-  double lo = 1e300, hi = 0, mean = 0;
-  for (const Vec3& p : m.positions) {
-    const double r = (p - c).norm();
-    lo = std::min(lo, r), hi = std::max(hi, r), mean += r / m.vertexCount();
-  }
-  EXPECT_LT((hi - lo) / mean, 0.005);
+  ASSERT_GE(m.vertexCount(), 500);  // one subdivision of 162 vertices (remeshing may move the count a little)
+  // Round to 0.2 % about the least-squares sphere's centre (the vertex centroid is not the
+  // sphere's centre when the vertices are spread unevenly).
+  EXPECT_LT(test::fittedRadii(m).spread(), 0.002);
   const Topology t(m.vertexCount(), m.faces);
   const Geometry g = computeGeometry(t, m.positions);
   const double e = totalCurvatureEnergy(t, g, computeCurvature(t, g, m.positions));
@@ -184,8 +179,9 @@ TEST(Cli, FairOptionsAndFailures) {
   ScratchDir dir("cli-fair-opts");
   ASSERT_EQ(runElastica("generate icosphere --level 2 --noise 0.05 -o " + dir.file("n.ply")).exitCode, 0);
   for (const char* flow : {"elastica", "lmc", "bilaplacian"}) {
-    const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") + " --max-steps 300 --flow " +
-                                          flow + " --h2k lambda --no-tangential --color-by-mean-curvature --ascii");
+    const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
+                                          " --scheme explicit --max-steps 300 --flow " + flow +
+                                          " --h2k lambda --no-tangential --color-by-mean-curvature --ascii");
     EXPECT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find("300 steps"), std::string::npos) << run.output;
     EXPECT_GE(test::readAsciiPly(dir.file("f.ply")).column("red"), 0);
@@ -197,7 +193,8 @@ TEST(Cli, FairOptionsAndFailures) {
   EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --flow willmore").exitCode, 2);
   EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor -1").exitCode, 2);
   // An unstable step is caught: error, non-zero exit, no output.
-  run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor 50 --report " + dir.file("d.json"));
+  run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --scheme explicit --step-factor 50 --report " +
+                    dir.file("d.json"));
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.output.find("diverged"), std::string::npos) << run.output;
   EXPECT_FALSE(std::filesystem::exists(dir.file("g.ply")));

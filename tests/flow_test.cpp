@@ -19,12 +19,23 @@ using namespace elastica;
 using test::aspectRatio;
 using test::radialNoise;
 
+namespace {
+
+// The paper's explicit scheme (FlowOptions's default is the semi-implicit one).
+FlowOptions explicitOptions() {
+  FlowOptions opt;
+  opt.scheme = Scheme::Explicit;
+  return opt;
+}
+
+}  // namespace
+
 // A torus of revolution R/r = 3 moves toward the Clifford torus R/r = √2 (E = 8π²) with E
 // decreasing at every check. Full convergence takes ~N² explicit steps: this test checks the
 // direction on a coarse torus; the semi-implicit integrator takes it all the way.
 TEST(Flow, TorusMovesTowardCliffordTorus) {
   TriMesh m = shapes::torus(3, 1, 24, 8);
-  FlowOptions opt;
+  FlowOptions opt = explicitOptions();
   opt.energyTolerance = 0;
   opt.maxSteps = 40000;
   const FlowReport r = fair(m, opt);
@@ -42,7 +53,7 @@ TEST(Flow, EnergyNonIncreasingOnNoisySphere) {
   const TriMesh noisy = radialNoise(shapes::icosphere(1.0, 2), 0.05, 2);
   for (FlowType flow : {FlowType::Elastica, FlowType::LaplacianOfMeanCurvature, FlowType::Bilaplacian}) {
     TriMesh m = noisy;
-    FlowOptions opt;
+    FlowOptions opt = explicitOptions();
     opt.flow = flow;
     opt.maxSteps = 20000;
     const FlowReport r = fair(m, opt);
@@ -57,7 +68,7 @@ TEST(Flow, EnergyNonIncreasingOnNoisySphere) {
 TEST(Flow, ScaleCovariance) {
   const TriMesh base = radialNoise(shapes::icosphere(1.0, 2), 0.05, 3);
   for (FlowType flow : {FlowType::Elastica, FlowType::LaplacianOfMeanCurvature, FlowType::Bilaplacian}) {
-    FlowOptions opt;
+    FlowOptions opt = explicitOptions();
     opt.flow = flow;
     opt.energyTolerance = 0;
     opt.maxSteps = 2000;
@@ -90,7 +101,7 @@ TEST(Flow, FixedVerticesAreBitIdentical) {
   }
   for (bool flips : {false, true}) {
     m = before;
-    FlowOptions opt;
+    FlowOptions opt = explicitOptions();
     opt.maxSteps = 3000;
     opt.flipEdges = flips;
     const FlowReport r = fair(m, FaceSet::fromFlags(selected), opt);
@@ -122,7 +133,7 @@ TEST(Flow, SlidingBoundaryStaysOnTheBoundary) {
     if (!onX && !onY) p.z() = u(rng);
   }
   const TriMesh before = m;
-  FlowOptions opt;
+  FlowOptions opt = explicitOptions();
   opt.boundary = BoundaryMode::Slide;
   opt.maxSteps = 3000;
   const FlowReport r = fair(m, opt);
@@ -145,7 +156,7 @@ TEST(Flow, SlidingBoundaryStaysOnTheBoundary) {
 // The fair() schedule subdivides with no jump in shape: the first stage's end state is kept.
 TEST(Flow, SubdivisionStageStartsFromTheCoarseResult) {
   TriMesh m = radialNoise(shapes::icosphere(1.0, 1), 0.05, 5);
-  FlowOptions opt;
+  FlowOptions opt = explicitOptions();
   opt.subdivisionLevels = 2;
   opt.maxSteps = 200000;
   const FlowReport r = fair(m, opt);
@@ -158,7 +169,7 @@ TEST(Flow, SubdivisionStageStartsFromTheCoarseResult) {
 TEST(Flow, LimitsCancellationAndErrors) {
   const TriMesh noisy = radialNoise(shapes::icosphere(1.0, 2), 0.05, 7);
   TriMesh m = noisy;
-  FlowOptions opt;
+  FlowOptions opt = explicitOptions();
   opt.maxSteps = 1234;
   EXPECT_EQ(fair(m, opt).steps, 1234);
   EXPECT_EQ(fair(m, opt).stop, StopReason::MaxSteps);
@@ -172,13 +183,13 @@ TEST(Flow, LimitsCancellationAndErrors) {
 
   // Nothing selected: nothing can move.
   m = noisy;
-  EXPECT_THROW(fair(m, FaceSet({}), FlowOptions{}), InvalidInputError);
+  EXPECT_THROW(fair(m, FaceSet({}), explicitOptions()), InvalidInputError);
   EXPECT_EQ(m.positions, noisy.positions);
   // A face index that is not a face of the mesh.
-  EXPECT_THROW(fair(m, FaceSet({0, m.faceCount()}), FlowOptions{}), InvalidInputError);
+  EXPECT_THROW(fair(m, FaceSet({0, m.faceCount()}), explicitOptions()), InvalidInputError);
   EXPECT_EQ(m.positions, noisy.positions);
 
-  FlowOptions bad;
+  FlowOptions bad = explicitOptions();
   bad.stepFactor = -1;
   EXPECT_THROW(fair(m, bad), InvalidInputError);
 }
@@ -187,7 +198,7 @@ TEST(Flow, LimitsCancellationAndErrors) {
 // stage that could not take a step.
 TEST(Flow, LimitAtAStageEndDoesNotSubdivide) {
   const TriMesh noisy = radialNoise(shapes::icosphere(1.0, 1), 0.05, 5);
-  FlowOptions opt;
+  FlowOptions opt = explicitOptions();
   opt.subdivisionLevels = 1;
   TriMesh m = noisy;
   const FlowReport full = fair(m, opt);
@@ -207,7 +218,7 @@ TEST(Flow, DivergenceRestoresTheLastGoodState) {
   TriMesh m = radialNoise(shapes::icosphere(1.0, 2), 0.05, 8);
   const Topology topo(m.vertexCount(), m.faces);
   const double edge0 = meanEdgeLength(topo, m.positions);
-  FlowOptions opt;
+  FlowOptions opt = explicitOptions();
   opt.stepFactor = 50;
   opt.checkInterval = 10;
   EXPECT_THROW(fair(m, opt), NumericalError);

@@ -9,6 +9,10 @@ nlohmann::json toJson(const FlowReport& r) {
   j["energy_final"] = r.energyFinal;
   j["steps"] = r.steps;
   j["rejected_steps"] = r.rejectedSteps;
+  j["mesh_quality"] = {{"pre_subdivisions", r.preSubdivisions},
+                       {"remeshings", r.remeshings},
+                       {"crossing_rejections", r.crossingRejections},
+                       {"input_self_intersects", r.inputSelfIntersects}};
   j["seconds"] = r.seconds;
   j["stop"] = nameOf(r.stop);
   j["min_lambda"] = r.minLambda;

@@ -9,6 +9,8 @@
 #include <elastica/topology.h>
 #include <elastica/types.h>
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,6 +26,42 @@ inline RadiusStats radii(const TriMesh& m) {
   Vec3 c = Vec3::Zero();
   for (const Vec3& p : m.positions) c += p;
   c /= m.vertexCount();
+  RadiusStats s;
+  for (const Vec3& p : m.positions) {
+    const double r = (p - c).norm();
+    s.mean += r;
+    s.min = std::min(s.min, r);
+    s.max = std::max(s.max, r);
+  }
+  s.mean /= m.vertexCount();
+  return s;
+}
+
+/// The least-squares sphere through the vertices (algebraic fit: |p|² = 2 c·p + d, r² = d + |c|²).
+struct Sphere {
+  Vec3 centre = Vec3::Zero();
+  double radius = 0;
+};
+
+inline Sphere fitSphere(const TriMesh& m) {
+  Eigen::MatrixXd A(m.vertexCount(), 4);
+  Eigen::VectorXd b(m.vertexCount());
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    const Vec3& p = m.positions[v];
+    A.row(v) << 2 * p.x(), 2 * p.y(), 2 * p.z(), 1;
+    b[v] = p.squaredNorm();
+  }
+  const Eigen::Vector4d x = A.colPivHouseholderQr().solve(b);
+  Sphere s;
+  s.centre = x.head<3>();
+  s.radius = std::sqrt(x[3] + s.centre.squaredNorm());
+  return s;
+}
+
+/// Distances of the vertices from the centre of their least-squares sphere: roundness that does
+/// not depend on how evenly the vertices are spread over the surface.
+inline RadiusStats fittedRadii(const TriMesh& m) {
+  const Vec3 c = fitSphere(m).centre;
   RadiusStats s;
   for (const Vec3& p : m.positions) {
     const double r = (p - c).norm();

@@ -16,9 +16,15 @@ namespace elastica {
 /// Input: a triangle mesh with manifold edges and consistently oriented faces (what the readers
 /// of elastica::io guarantee). Vertices on the boundary and their one-ring neighbours stay fixed
 /// bit for bit with BoundaryMode::Fixed (two rows, for G¹ continuity); with BoundaryMode::Slide
-/// the boundary vertices move along the boundary curve. Without subdivision and edge flips the
-/// faces stay as they are; with them, the mesh is rebuilt (new vertices and faces appended,
-/// flipped faces renumbered in place).
+/// the boundary vertices move along the boundary curve. Without subdivision, edge flips and
+/// remeshing the faces stay as they are; with them, the mesh is rebuilt (new vertices and faces
+/// appended, flipped faces renumbered in place). Remeshing (FlowOptions::remesh, the semi-implicit
+/// scheme's default) rewrites only faces whose three vertices move: vertices that do not move keep
+/// their index (unless the region lost more vertices than it gained and one would fall past the
+/// end: then they keep their order) and faces touching one keep their index and value. The
+/// semi-implicit scheme with remeshing never returns crossing faces when the input had none.
+/// FlowReport::energyInitial is the energy where the first flow starts (after any subdivision
+/// made before it).
 ///
 /// Stops at the energy plateau (FlowOptions::energyTolerance in both schemes; plateauTolerance and
 /// shapeTolerance in the semi-implicit one as well), at maxSteps / maxSeconds, or

@@ -64,7 +64,10 @@ struct FlowProgress {
 
 struct FlowOptions {
   FlowType flow = FlowType::Elastica;
-  Scheme scheme = Scheme::Explicit;
+  /// Semi-implicit by default: it converges in tens to hundreds of steps where the paper's
+  /// explicit scheme needs N² (docs/benchmarks.md), and with `remesh` it fairs coarse and badly
+  /// shaped meshes (docs/figures.md). The bilaplacian flow has the explicit scheme only.
+  Scheme scheme = Scheme::SemiImplicit;
   VertexArea area = VertexArea::Mixed;
   CurvatureOptions curvature;  ///< H² − K treatment (clamp by default, or the paper's λ)
   BoundaryMode boundary = BoundaryMode::Fixed;
@@ -72,6 +75,19 @@ struct FlowOptions {
   /// Dynamic connectivity (the paper's future work [7]), lightly: at every check, flip the
   /// non-Delaunay edges among moving vertices. Positions are untouched; faces change.
   bool flipEdges = false;
+
+  /// Semi-implicit scheme: mesh quality as stages of the pipeline (the paper's future work,
+  /// dynamic connectivity). Before the first flow, the mesh is subdivided (within
+  /// subdivisionLevels) until at least 100·(genus + 1) vertices move; before the first stage, the
+  /// faces whose vertices all move are remeshed isotropically (split, collapse, flip, relax; the
+  /// vertex count stays about the same); after a stage that left an angle below 20° or a vertex
+  /// whose curvature κ and edge length ℓ have κℓ > 0.6 (a neck the energy cannot see), they are
+  /// remeshed again, finer where κ is large (ℓ ≈ 0.4/κ), and flowed again (twice at most);
+  /// after every accepted step, non-Delaunay edges among moving vertices are flipped; and no step
+  /// or remeshing that makes faces cross is accepted when the input's did not (the embedding
+  /// guard). Fixed vertices and every face touching one are never rewritten. Off: the mesh keeps
+  /// its connectivity (but for flipEdges and subdivision). The explicit scheme ignores it.
+  bool remesh = true;
 
   /// Tangential drift ε·T (paper eq. 2.5): area-weighted bi-umbrella, keeps triangles even.
   bool tangentialDrift = true;
@@ -139,6 +155,12 @@ struct FlowReport {
   double energyInitial = 0, energyFinal = 0;
   long long steps = 0;          ///< steps taken (semi-implicit: attempts, accepted or not)
   long long rejectedSteps = 0;  ///< semi-implicit attempts rejected (τ halved)
+  /// FlowOptions::remesh: subdivisions made before the first flow (the working-resolution floor),
+  /// isotropic remeshings of the moving region, and steps rejected because faces would cross.
+  int preSubdivisions = 0, remeshings = 0;
+  long long crossingRejections = 0;
+  /// The input's faces already crossed: the embedding guard was off (nothing to keep).
+  bool inputSelfIntersects = false;
   double seconds = 0;
   double minLambda = 1;
   StopReason stop = StopReason::Converged;

@@ -58,6 +58,7 @@ struct HoleFillOptions {
     f.scheme = Scheme::SemiImplicit;
     f.flipEdges = true;
     f.shapeTolerance = 1e-3;
+    f.remesh = false;  // the fill has its own refinement and remeshing stages, made for a patch
     return f;
   }
 };

@@ -4,7 +4,9 @@
 #include "flow/fair_masked.h"
 #include "flow/explicit_integrator.h"
 #include "flow/flow_state.h"
+#include "flow/mesh_quality_stage.h"
 #include "flow/semi_implicit_integrator.h"
+#include "mesh/self_intersection.h"
 
 #include <algorithm>
 #include <chrono>
@@ -162,8 +164,15 @@ bool shapeSettled(FlowState& state, const SemiImplicitIntegrator& integrator, do
 // scheme), the energy plateau (no accepted step in that window lowered E below what it was before
 // them by more than `plateauTolerance`, relative), the shape settled (FlowOptions::shapeTolerance),
 // no step lowers E any more, or a limit.
-void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rateTolerance, double plateauTolerance) {
+void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rateTolerance, double plateauTolerance,
+                       bool guardEmbedding) {
   SemiImplicitIntegrator integrator;
+  integrator.guardEmbedding(guardEmbedding);
+  struct CountCrossings {  // however the stage ends
+    const SemiImplicitIntegrator& integrator;
+    FlowReport& report;
+    ~CountCrossings() { report.crossingRejections += integrator.crossingRejections(); }
+  } countCrossings{integrator, run.report};
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;
   const double ell4 = ell * ell * ell * ell;
@@ -218,8 +227,34 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   if (opt.boundary == BoundaryMode::Slide)
     slider = std::make_unique<BoundarySlider>(Topology(mesh.vertexCount(), mesh.faces), mesh.positions);
 
-  for (int level = 0;; ++level) {
-    FlowState state(mesh, selection, opt, slider.get());
+  // The semi-implicit pipeline keeps the mesh fit for the operators (FlowOptions::remesh,
+  // flow/mesh_quality_stage.h): first the working-resolution floor, within the levels asked for.
+  const bool quality = opt.scheme == Scheme::SemiImplicit && opt.remesh;
+  FlowOptions stageOpt = opt;
+  if (quality) stageOpt.flipEdges = true;
+  int level = 0;
+  if (quality) {
+    const int floor = workingResolutionFloor(mesh);
+    while (level < opt.subdivisionLevels && movingVertexCount(mesh, selection, opt.boundary) < floor &&
+           (opt.targetEdgeLength <= 0 ||
+            meanEdgeLength(Topology(mesh.vertexCount(), mesh.faces), mesh.positions) > opt.targetEdgeLength)) {
+      subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
+      ++level;
+      ++report.preSubdivisions;
+    }
+    report.inputSelfIntersects = selfIntersects(mesh);
+  }
+  // A stage that leaves triangles this thin, or a neck this coarse (κℓ, mesh_quality_stage.h), is
+  // remeshed and flowed again, at most kMaxReflows times per level.
+  constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
+  constexpr int kMaxReflows = 2;
+  bool first = true, adaptive = false;
+  int reflows = 0;
+  if (quality && remeshMovingRegion(mesh, selection, opt.boundary, false)) ++report.remeshings;
+  for (;; ++level) {
+    if (adaptive && remeshMovingRegion(mesh, selection, opt.boundary, true)) ++report.remeshings;
+    adaptive = false;
+    FlowState state(mesh, selection, stageOpt, slider.get());
     if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
       throw InvalidInputError(
           "fair: no vertex can move (a moving vertex needs all its faces selected and, with a fixed "
@@ -228,9 +263,10 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     const bool refineLater = level < opt.subdivisionLevels &&
                              (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
     const double stageStart = run.elapsed();
-    if (level == 0) {
+    if (first) {  // the energy where the first flow starts (after any refinement before it)
       report.energyInitial = state.energy();
       report.history.push_back({0, 0, 0, report.energyInitial});
+      first = false;
     }
     FlowStage stage;
     stage.level = level;
@@ -241,7 +277,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
         explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
       } else {
         const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
-        semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, plateau);
+        semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, plateau,
+                          quality && !report.inputSelfIntersects);
       }
     } catch (const FlowDivergedError&) {
       mesh = state.mesh();  // the restored checkpoint (faces may have been flipped)
@@ -254,7 +291,18 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     report.energyFinal = stage.energy;
     // A limit reached just as the stage converged stops the run before it subdivides: a finer
     // mesh costs four times the memory and work, and its stage could not take a step.
-    if (run.stopped || !refineLater || run.limitReached()) break;
+    if (run.stopped || run.limitReached()) break;
+    if (quality && reflows < kMaxReflows &&
+        (smallestMovingAngle(mesh, selection, opt.boundary) < kRemeshAngleDegrees ||
+         largestMovingCurvatureTimesEdge(mesh, selection, opt.boundary) > kRemeshCurvatureTimesEdge)) {
+      ++reflows;  // remesh and flow this level again
+      adaptive = true;
+      --level;
+      report.stop = StopReason::Converged;
+      continue;
+    }
+    if (!refineLater) break;
+    reflows = 0;
     report.stop = StopReason::Converged;  // the next stage decides
     subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
   }

@@ -3,6 +3,7 @@
 #include "flow/semi_implicit_integrator.h"
 #include "flow/semi_implicit_system.h"
 #include "flow/spd_solver.h"
+#include "mesh/self_intersection.h"
 #include "support/parallel.h"
 
 #include <Eigen/SparseCore>
@@ -105,6 +106,12 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   const FlowOptions& opt = state.options();
   for (int pass = 0; pass < opt.driftPasses && opt.tangentialDrift; ++pass)
     if (!driftPass(state, energyLimit)) break;
+  // The embedding guard, once for the step and its drift (a full test costs about what a step's
+  // other checks cost together): faces that cross undo the whole step.
+  if (guardEmbedding_ && selfIntersects(state.mesh(), &state.roles().activeFace)) {
+    ++crossingRejections_;
+    return reject();
+  }
   // The last evaluation (of the accepted state) stays valid unless the boundary slides.
   state.slideBoundary();
   return true;

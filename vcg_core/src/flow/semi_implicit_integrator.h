@@ -1,8 +1,9 @@
 // The semi-implicit scheme (ours; the paper's future work): linearly implicit in the stiff
 // fourth-order part, (M + τ/2 C M⁻¹ C) δ = τ M F for the normal displacement δ, everything else
 // lagged (semi_implicit_system.h). A step is accepted only if no active face turns over, no vertex
-// jumps more than half its mean edge length and (elastica) the energy does not rise; tangential
-// drift passes follow under the same rules.
+// jumps more than half its mean edge length, (elastica) the energy does not rise and, with the
+// embedding guard on, no moved face crosses another; tangential drift passes follow under the
+// same rules.
 #pragma once
 
 #include "flow/flow_state.h"
@@ -21,6 +22,11 @@ class SemiImplicitIntegrator {
   bool tryStep(FlowState& state, double tau);
   /// The largest normal displacement |δ_i| of the last accepted step.
   double lastNormalStep() const { return lastNormalStep_; }
+  /// Rejects a step after which (with its drift passes) an active face crosses another face
+  /// (mesh/self_intersection.h). Off by default: an input whose faces already cross has nothing to keep.
+  void guardEmbedding(bool on) { guardEmbedding_ = on; }
+  /// Attempts rejected by the embedding guard alone.
+  long long crossingRejections() const { return crossingRejections_; }
 
  private:
   void speed(FlowState& state);
@@ -32,6 +38,8 @@ class SemiImplicitIntegrator {
   bool driftPass(FlowState& state, double energyLimit);
 
   double lastNormalStep_ = 0;
+  bool guardEmbedding_ = false;
+  long long crossingRejections_ = 0;
   long long connectivityVersion_ = -1;  // of the state that freeIndex_ and the solver were built for
   std::vector<int> freeIndex_;    // vertex → row of the system, or -1
   std::vector<double> lh_, speed_;

@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
+#include <array>
+#include <utility>
 
 namespace elastica {
 namespace {
@@ -71,76 +72,79 @@ bool trianglesCross(const TriMesh& m, const Face& f, const Face& g) {
 }
 
 // Calls visit(f, g) for each pair of faces (f < g) whose boxes overlap, skipping pairs with
-// neither face in `only`; stops when visit returns true.
+// neither face in `only`; stops when visit returns true. Broad phase: a uniform grid of cells about
+// the mean face size, as (cell, face) entries sorted by cell; a pair is tested only in the first
+// cell both faces cover, so once.
 template <class Visit>
 void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Visit visit) {
   const int nf = m.faceCount();
   if (nf < 2) return;
   std::vector<Box> boxes(nf);
   Box all{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
-  double edgeSum = 0;
+  double extentSum = 0;
   for (int f = 0; f < nf; ++f) {
     boxes[f] = boxOf(m, m.faces[f]);
     all.lo = all.lo.cwiseMin(boxes[f].lo);
     all.hi = all.hi.cwiseMax(boxes[f].hi);
-    edgeSum += (boxes[f].hi - boxes[f].lo).maxCoeff();
+    extentSum += (boxes[f].hi - boxes[f].lo).maxCoeff();
   }
-  // Cells of about the mean box size: each face lands in a few cells, each cell holds a few faces.
-  const double cell = std::max(edgeSum / nf, 1e-300);
-  auto cellOf = [&](double x, int axis) {
-    return static_cast<std::int64_t>(std::floor((x - all.lo[axis]) / cell));
+  // Cells of about the mean box size (each face lands in a few cells, each cell holds a few
+  // faces), and at most 2^20 cells per axis so that a cell's coordinates pack into one key.
+  constexpr double kMaxCellsPerAxis = 1 << 20;
+  const double cell = std::max({extentSum / nf, (all.hi - all.lo).maxCoeff() / kMaxCellsPerAxis, 1e-300});
+  using Cell = std::array<std::int64_t, 3>;
+  auto cellOf = [&](const Vec3& p) {
+    Cell c;
+    for (int axis = 0; axis < 3; ++axis)
+      c[axis] = std::min<std::int64_t>(static_cast<std::int64_t>((p[axis] - all.lo[axis]) / cell), (1 << 21) - 1);
+    return c;
   };
-  std::unordered_map<std::int64_t, std::vector<int>> grid;
-  grid.reserve(static_cast<std::size_t>(nf) * 2);
-  const std::int64_t kStride = 1 << 20;  // cells per axis before keys alias (aliasing only costs tests)
-  auto key = [&](std::int64_t i, std::int64_t j, std::int64_t k) { return (i * kStride + j) * kStride + k; };
+  auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) { return std::uint64_t((i << 42) | (j << 21) | k); };
+  std::vector<Cell> lo(nf), hi(nf);
   // A face much larger than the mean (a CAD sliver's long side among small faces) would cover too
   // many cells: such faces are tested against every face instead.
-  auto cellsOf = [&](const Box& b) {
-    double n = 1;
-    for (int axis = 0; axis < 3; ++axis) n *= double(cellOf(b.hi[axis], axis) - cellOf(b.lo[axis], axis) + 1);
-    return n;
-  };
-  constexpr double kMaxCellsPerFace = 512;
-  std::vector<int> large;
+  constexpr std::int64_t kMaxCellsPerFace = 512;
+  std::vector<std::uint8_t> large(nf, 0);
+  std::vector<std::pair<std::uint64_t, int>> entries;
+  entries.reserve(static_cast<std::size_t>(nf) * 4);
   for (int f = 0; f < nf; ++f) {
-    const Box& b = boxes[f];
-    if (cellsOf(b) > kMaxCellsPerFace) {
-      large.push_back(f);
+    lo[f] = cellOf(boxes[f].lo);
+    hi[f] = cellOf(boxes[f].hi);
+    const std::int64_t cells = (hi[f][0] - lo[f][0] + 1) * (hi[f][1] - lo[f][1] + 1) * (hi[f][2] - lo[f][2] + 1);
+    if (cells > kMaxCellsPerFace) {
+      large[f] = 1;
       continue;
     }
-    for (std::int64_t i = cellOf(b.lo.x(), 0); i <= cellOf(b.hi.x(), 0); ++i)
-      for (std::int64_t j = cellOf(b.lo.y(), 1); j <= cellOf(b.hi.y(), 1); ++j)
-        for (std::int64_t k = cellOf(b.lo.z(), 2); k <= cellOf(b.hi.z(), 2); ++k) grid[key(i, j, k)].push_back(f);
+    for (std::int64_t i = lo[f][0]; i <= hi[f][0]; ++i)
+      for (std::int64_t j = lo[f][1]; j <= hi[f][1]; ++j)
+        for (std::int64_t k = lo[f][2]; k <= hi[f][2]; ++k) entries.emplace_back(key(i, j, k), f);
   }
-  std::vector<int> seenWith(nf, -1);  // the last face f that g was tested against
-  // One candidate pair, each unordered pair once: grid pairs as (f < g); pairs with a large face
-  // from the large face's side (and large–large pairs from the smaller index).
+  std::sort(entries.begin(), entries.end());
+
   auto test = [&](int f, int g) {
     if (only && !(*only)[f] && !(*only)[g]) return false;
     if (!overlap(boxes[f], boxes[g])) return false;
     return visit(std::min(f, g), std::max(f, g));
   };
-  for (int f = 0; f < nf; ++f) {
-    const Box& b = boxes[f];
-    if (cellsOf(b) > kMaxCellsPerFace) continue;
-    for (std::int64_t i = cellOf(b.lo.x(), 0); i <= cellOf(b.hi.x(), 0); ++i)
-      for (std::int64_t j = cellOf(b.lo.y(), 1); j <= cellOf(b.hi.y(), 1); ++j)
-        for (std::int64_t k = cellOf(b.lo.z(), 2); k <= cellOf(b.hi.z(), 2); ++k) {
-          auto cellFaces = grid.find(key(i, j, k));
-          if (cellFaces == grid.end()) continue;
-          for (int g : cellFaces->second) {
-            if (g <= f || seenWith[g] == f) continue;
-            seenWith[g] = f;
-            if (test(f, g)) return;
-          }
-        }
+  for (std::size_t a = 0; a < entries.size();) {
+    std::size_t b = a;
+    while (b < entries.size() && entries[b].first == entries[a].first) ++b;
+    const std::uint64_t here = entries[a].first;
+    for (std::size_t x = a; x < b; ++x)
+      for (std::size_t y = x + 1; y < b; ++y) {
+        const int f = entries[x].second, g = entries[y].second;
+        // The first cell both cover (the corner of their cell ranges' overlap) tests the pair.
+        if (key(std::max(lo[f][0], lo[g][0]), std::max(lo[f][1], lo[g][1]), std::max(lo[f][2], lo[g][2])) != here)
+          continue;
+        if (test(f, g)) return;
+      }
+    a = b;
   }
-  std::vector<std::uint8_t> isLarge(nf, 0);
-  for (int f : large) isLarge[f] = 1;
-  for (int f : large)
-    for (int g = 0; g < nf; ++g)
-      if (g != f && !(isLarge[g] && g < f) && test(f, g)) return;
+  for (int f = 0; f < nf; ++f) {
+    if (!large[f]) continue;
+    for (int g = 0; g < nf; ++g)  // large–large pairs once, from the smaller index
+      if (g != f && !(large[g] && g < f) && test(f, g)) return;
+  }
 }
 
 }  // namespace

@@ -26,10 +26,12 @@ bool turnsLittle(const Vec3& before, const Vec3& after) {
 // dropped by compact().
 class PatchEditor {
  public:
-  PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew)
-      : m_(mesh), patch_(patchFace), sigma_(sigma), firstNew_(firstNew), faceAlive_(mesh.faces.size(), 1),
+  PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
+              std::vector<std::uint8_t>& movable)
+      : m_(mesh), patch_(patchFace), sigma_(sigma), movable_(movable), faceAlive_(mesh.faces.size(), 1),
         vertexFaces_(vertexFaces(mesh)) {
     sigma_.resize(m_.positions.size(), 0);
+    movable_.resize(m_.positions.size(), 0);
     int patchSoFar = 0;
     for (int f = 0; f < m_.faceCount(); ++f) {
       if (patch_[f]) ++patchSoFar;
@@ -75,6 +77,7 @@ class PatchEditor {
     const int x = m_.vertexCount();
     m_.positions.push_back(0.5 * (m_.positions[a] + m_.positions[b]));
     sigma_.push_back(target(a, b));
+    movable_.push_back(1);
     vertexFaces_.emplace_back();
     addFace({x, b, c});
     addFace({x, a, d});
@@ -83,10 +86,10 @@ class PatchEditor {
     return true;
   }
 
-  // Removes new vertex a by joining it to new vertex b, which moves to p, if that keeps the patch
+  // Removes movable vertex a by joining it to movable vertex b, which moves to p, if that keeps the patch
   // a manifold disk with no face turned over and no edge longer than kSplitFactor · target.
   bool collapse(int a, int b, const Vec3& p) {
-    if (a < firstNew_ || b < firstNew_ || livePatchFaces_ - 2 < minPatchFaces_) return false;
+    if (!movable_[a] || !movable_[b] || livePatchFaces_ - 2 < minPatchFaces_) return false;
     int f0, f1, c = -1, d = -1;
     if (!interiorEdge(a, b, f0, f1, c, d)) return false;
     // Link condition: a and b share exactly the neighbours c and d; c and d keep three faces.
@@ -114,14 +117,14 @@ class PatchEditor {
     return true;
   }
 
-  // A short edge: two new vertices meet at its midpoint; a new vertex too close to an original one
-  // (which stays) is joined, at its place, to one of its other new neighbours instead.
+  // A short edge: two movable vertices meet at its midpoint; a movable vertex too close to a fixed
+  // one (which stays) is joined, at its place, to one of its other movable neighbours instead.
   bool collapseShort(int a, int b) {
-    if (a >= firstNew_ && b >= firstNew_) return collapse(a, b, 0.5 * (m_.positions[a] + m_.positions[b]));
-    const int v = a >= firstNew_ ? a : b;
-    if (v < firstNew_) return false;
+    if (movable_[a] && movable_[b]) return collapse(a, b, 0.5 * (m_.positions[a] + m_.positions[b]));
+    const int v = movable_[a] ? a : b;
+    if (!movable_[v]) return false;
     for (int w : neighbours(v))
-      if (w >= firstNew_ && collapse(v, w, m_.positions[w])) return true;
+      if (movable_[w] && collapse(v, w, m_.positions[w])) return true;
     return false;
   }
 
@@ -143,14 +146,14 @@ class PatchEditor {
     return true;
   }
 
-  // Moves each new vertex toward the mean of its neighbours, within the tangent plane of its
+  // Moves each movable vertex toward the mean of its neighbours, within the tangent plane of its
   // area-weighted normal (so the patch keeps its shape to first order). One Jacobi pass; a move
   // that would turn one of the vertex's faces over (against the neighbours' current positions)
   // is halved until it does not, or dropped.
   void relax() {
     std::vector<Vec3> next = m_.positions;
-    for (int v = firstNew_; v < m_.vertexCount(); ++v) {
-      if (vertexFaces_[v].empty()) continue;
+    for (int v = 0; v < m_.vertexCount(); ++v) {
+      if (!movable_[v] || vertexFaces_[v].empty()) continue;
       Vec3 n = Vec3::Zero();
       for (int f : vertexFaces_[v]) n += normalOf(f, v, m_.positions[v]);
       const std::vector<int> ring = neighbours(v);
@@ -171,7 +174,7 @@ class PatchEditor {
 
   // Drops dead faces (filling their slots with faces from the end, so every slot below the
   // original face count stays filled: collapses never leave fewer patch faces than the patch had
-  // slots) and dead vertices (later new vertices move down).
+  // slots) and dead vertices (later vertices move down).
   void compact() {
     int last = m_.faceCount() - 1;
     for (int s = 0; s < m_.faceCount(); ++s) {
@@ -186,16 +189,43 @@ class PatchEditor {
     const int liveFaces = static_cast<int>(std::count(faceAlive_.begin(), faceAlive_.end(), 1));
     m_.faces.resize(liveFaces);
     patch_.resize(liveFaces);
-    std::vector<int> index(m_.positions.size());
-    int next = 0;
-    for (int v = 0; v < m_.vertexCount(); ++v) {
-      if (v >= firstNew_ && vertexFaces_[v].empty()) continue;
-      index[v] = next;
-      m_.positions[next] = m_.positions[v];
-      sigma_[next++] = sigma_[v];
+    // Fixed vertices keep their indices; the live movable ones fill the other slots in their
+    // order (with every movable vertex after every fixed one, as in a hole's patch, that is
+    // moving later vertices down). If too many movable vertices died for that (a fixed vertex
+    // would be past the end), every live vertex moves down instead, fixed ones keeping their order.
+    const int n = m_.vertexCount();
+    int live = 0, lastFixed = -1;
+    for (int v = 0; v < n; ++v) {
+      if (!(movable_[v] && vertexFaces_[v].empty())) ++live;
+      if (!movable_[v]) lastFixed = v;
     }
-    m_.positions.resize(next);
-    sigma_.resize(next);
+    std::vector<int> index(n, -1);
+    if (lastFixed < live) {
+      for (int v = 0; v < n; ++v)
+        if (!movable_[v]) index[v] = v;
+      int slot = 0;
+      for (int v = 0; v < n; ++v) {
+        if (!movable_[v] || vertexFaces_[v].empty()) continue;
+        while (slot < n && slot <= lastFixed && !movable_[slot]) ++slot;
+        index[v] = slot++;
+      }
+    } else {
+      int next = 0;
+      for (int v = 0; v < n; ++v)
+        if (!(movable_[v] && vertexFaces_[v].empty())) index[v] = next++;
+    }
+    std::vector<Vec3> positions(live);
+    std::vector<std::uint8_t> movable(live);
+    std::vector<double> sigma(live);
+    for (int v = 0; v < n; ++v) {
+      if (index[v] < 0) continue;
+      positions[index[v]] = m_.positions[v];
+      movable[index[v]] = movable_[v];
+      sigma[index[v]] = sigma_[v];
+    }
+    m_.positions.swap(positions);
+    movable_.swap(movable);
+    sigma_.swap(sigma);
     for (Face& t : m_.faces)
       for (int& v : t) v = index[v];
   }
@@ -257,7 +287,7 @@ class PatchEditor {
   TriMesh& m_;
   std::vector<std::uint8_t>& patch_;
   std::vector<double>& sigma_;
-  const int firstNew_;
+  std::vector<std::uint8_t>& movable_;
   std::vector<std::uint8_t> faceAlive_;
   std::vector<std::vector<int>> vertexFaces_;
   // compact() refills dead slots from the end of the face list: while the patch keeps at least as
@@ -269,12 +299,21 @@ class PatchEditor {
 
 void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
                  const PatchRemeshingOptions& opt) {
-  PatchEditor patch(mesh, patchFace, sigma, firstNew);
+  std::vector<std::uint8_t> movable(mesh.positions.size(), 0);
+  std::fill(movable.begin() + std::min<std::size_t>(std::max(firstNew, 0), movable.size()), movable.end(), 1);
+  remeshRegion(mesh, patchFace, sigma, movable, opt);
+}
+
+void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
+                  std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt) {
+  PatchEditor patch(mesh, regionFace, sigma, movable);
   for (int round = 0; round < opt.iterations; ++round) {
     for (int pass = 0; pass < kMaxSplitPasses; ++pass) {
       bool any = false;
-      for (const auto& [a, b] : patch.patchEdges())
+      for (const auto& [a, b] : patch.patchEdges()) {
+        if (opt.maxVertices > 0 && mesh.vertexCount() >= opt.maxVertices) break;
         if (patch.length(a, b) > kSplitFactor * patch.target(a, b)) any = patch.split(a, b) || any;
+      }
       if (!any) break;
     }
     for (const auto& [a, b] : patch.patchEdges())

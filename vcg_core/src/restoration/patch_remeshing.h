@@ -19,6 +19,9 @@ struct PatchRemeshingOptions {
   int iterations = 10;
   /// Tangential relaxation passes per round (Jacobi, each a full step to the neighbours' mean).
   int relaxPasses = 10;
+  /// Splits stop once the mesh has this many vertices (0: no limit): a region whose edges span
+  /// many orders of magnitude (a vertex thrown far away) would otherwise be split without end.
+  int maxVertices = 0;
 };
 
 /// Remeshes the faces flagged in `patchFace` (one byte per face) toward the edge length `sigma`
@@ -41,5 +44,13 @@ struct PatchRemeshingOptions {
 /// Lengths and tolerances are relative to `sigma`: scale-covariant.
 void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
                  const PatchRemeshingOptions& opt = {});
+
+/// The general form, for any region of a mesh (the flow's moving region): vertices flagged in
+/// `movable` (one byte per vertex; remeshPatch's "new" vertices) may move, be collapsed and be
+/// removed, the others never; new vertices are movable. `movable` and `sigma` follow the
+/// vertices. Every movable vertex must have a closed fan of region faces (a region's vertices
+/// two rings inside its border have).
+void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
+                  std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt = {});
 
 }  // namespace elastica
