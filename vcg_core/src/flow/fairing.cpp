@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -27,6 +28,11 @@ constexpr double kSizeJump = 2;
 // Semi-implicit step control (docs/benchmarks.md §2 measures it): τ₀ = 0.05 ℓ⁴, ×1.5 on success, ×0.5 on rejection;
 // below 1e-12 ℓ⁴ no step can lower the energy any more: the flow is at its noise floor.
 constexpr double kInitialTau = 0.05, kGrow = 1.5, kShrink = 0.5, kSmallestTau = 1e-12;
+// After a failed step, τ stays below kCeilingMargin × the failed size, which rises by kCeilingGrow
+// per accepted step.
+constexpr double kCeilingMargin = 0.8, kCeilingGrow = 1.2;
+// A stage after the first starts at this fraction of the previous stage's last accepted step.
+constexpr double kStageTauCarry = 0.25;
 // Semi-implicit plateau: relative energy change over this many accepted steps. Subdivision is
 // triggered at 100× the final tolerance (near steady state is enough before refining).
 constexpr int kPlateauWindow = 10;
@@ -161,11 +167,11 @@ bool shapeSettled(FlowState& state, const SemiImplicitIntegrator& integrator, do
 
 // The semi-implicit scheme with adaptive τ until the energy rate over the last kPlateauWindow
 // accepted steps falls below `rateTolerance` (FlowOptions::energyTolerance, as the explicit
-// scheme), the energy plateau (no accepted step in that window lowered E below what it was before
-// them by more than `plateauTolerance`, relative), the shape settled (FlowOptions::shapeTolerance),
-// no step lowers E any more, or a limit.
+// scheme), the energy plateau (the normal steps of that window lowered E by at most
+// `plateauTolerance`, relative), the shape settled (FlowOptions::shapeTolerance), no step lowers
+// E any more, or a limit.
 void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rateTolerance, double plateauTolerance,
-                       bool guardEmbedding) {
+                       bool guardEmbedding, double& lastTau) {
   SemiImplicitIntegrator integrator;
   integrator.guardEmbedding(guardEmbedding);
   struct CountCrossings {  // however the stage ends
@@ -177,13 +183,21 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   const double ell = state.geometry().meanEdgeLength;
   const double ell4 = ell * ell * ell * ell;
   const double area0 = state.activeArea();
-  double tau = kInitialTau * ell4;
-  std::deque<double> window{state.energy()};
+  // A later stage (after a subdivision or a remeshing) starts near its predecessor's last step:
+  // its shape is nearly settled already, and growing τ again from 0.05 ℓ⁴ would cost ~15 steps.
+  double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
+  double ceiling = std::numeric_limits<double>::infinity();  // the last step size that failed, raised slowly
+  // The window holds, per accepted step, the flow time and the energy the normal steps have taken
+  // off so far (drift passes and edge flips excluded: they redistribute vertices, and a stop
+  // rule that counted them would wait on mesh changes rather than on the shape).
+  double lowered = 0;
+  std::deque<double> window{lowered};
   std::deque<double> windowTime{run.time};
   while (!run.limitReached()) {
     ++report.steps;  // attempts count against maxSteps
     if (!integrator.tryStep(state, tau)) {
       ++report.rejectedSteps;
+      ceiling = tau;
       tau *= kShrink;
       if (tau < kSmallestTau * ell4) {  // nothing lowers E any more
         report.stop = StopReason::Stalled;
@@ -196,19 +210,23 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
     ++stage.steps;
     run.time += tau;
     const double accepted = tau;
-    tau *= kGrow;
+    lastTau = accepted;
+    // Grow, but stay below the last step that failed, probing upward slowly: a plain ×1.5 / ×0.5
+    // controller settles where a third of the attempts fail (ln 1.5 / ln 3), each a wasted solve.
+    tau = std::min(tau * kGrow, kCeilingMargin * ceiling);
+    ceiling *= kCeilingGrow;
     const double energy = state.energy();
     if (run.record(state, stage.level, energy)) return;
     if (shapeSettled(state, integrator, accepted, run.opt.shapeTolerance)) return;
-    window.push_back(energy);
+    lowered += integrator.lastEnergyDecrease();
+    window.push_back(lowered);
     windowTime.push_back(run.time);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
-    const double before = window.front(), timeBefore = windowTime.front();
+    const double decrease = lowered - window.front(), timeBefore = windowTime.front();
     window.pop_front();
     windowTime.pop_front();
-    const double best = *std::min_element(window.begin(), window.end());
-    if (before - best <= plateauTolerance * std::max(std::abs(energy), 1.0)) return;
-    if (std::abs(energyRate(before, energy, run.time - timeBefore, state.activeArea())) < rateTolerance) return;
+    if (decrease <= plateauTolerance * std::max(std::abs(energy), 1.0)) return;
+    if (std::abs(energyRate(energy + decrease, energy, run.time - timeBefore, state.activeArea())) < rateTolerance) return;
   }
 }
 
@@ -249,6 +267,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
   constexpr int kMaxReflows = 2;
   bool first = true, adaptive = false;
+  double lastTau = 0;  // the semi-implicit scheme's last accepted step, carried into the next stage
   int reflows = 0;
   if (quality && remeshMovingRegion(mesh, selection, opt.boundary, false)) ++report.remeshings;
   for (;; ++level) {
@@ -278,7 +297,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
       } else {
         const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
         semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, plateau,
-                          quality && !report.inputSelfIntersects);
+                          quality && !report.inputSelfIntersects, lastTau);
       }
     } catch (const FlowDivergedError&) {
       mesh = state.mesh();  // the restored checkpoint (faces may have been flipped)

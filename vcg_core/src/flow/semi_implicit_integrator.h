@@ -3,7 +3,7 @@
 // lagged (semi_implicit_system.h). A step is accepted only if no active face turns over, no vertex
 // jumps more than half its mean edge length, (elastica) the energy does not rise and, with the
 // embedding guard on, no moved face crosses another; tangential drift passes follow under the
-// same rules.
+// same rules (the energy before the step as the limit).
 #pragma once
 
 #include "flow/flow_state.h"
@@ -22,6 +22,9 @@ class SemiImplicitIntegrator {
   bool tryStep(FlowState& state, double tau);
   /// The largest normal displacement |δ_i| of the last accepted step.
   double lastNormalStep() const { return lastNormalStep_; }
+  /// How much the last accepted step's normal displacement lowered the energy (its drift passes
+  /// not counted: they even out triangles and may move E either way).
+  double lastEnergyDecrease() const { return lastEnergyDecrease_; }
   /// Rejects a step after which (with its drift passes) an active face crosses another face
   /// (mesh/self_intersection.h). Off by default: an input whose faces already cross has nothing to keep.
   void guardEmbedding(bool on) { guardEmbedding_ = on; }
@@ -37,7 +40,7 @@ class SemiImplicitIntegrator {
   /// One tangential drift pass; undone (returns false) if the result is not acceptable().
   bool driftPass(FlowState& state, double energyLimit);
 
-  double lastNormalStep_ = 0;
+  double lastNormalStep_ = 0, lastEnergyDecrease_ = 0;
   bool guardEmbedding_ = false;
   long long crossingRejections_ = 0;
   long long connectivityVersion_ = -1;  // of the state that freeIndex_ and the solver were built for
