@@ -1,0 +1,181 @@
+// The flow issue's cage experiment as tests: coarse polygon cages written by hand (data/cages/,
+// quads split by the reader along one diagonal, CAD slivers), faired by the default pipeline
+// (semi-implicit with remeshing), against what is known of the continuum minimisers. Roundness and
+// torus proportions are measured about least-squares fits, not vertex centroids: remeshing spreads
+// the vertices unevenly, which moves their centroid but not the surface.
+#include "self_intersections.h"
+#include "shape_measures.h"
+
+#include <elastica/fairing.h>
+#include <elastica/io/mesh_reader.h>
+#include <elastica/mesh_curvature.h>
+#include <elastica/shapes.h>
+#include <elastica/topology.h>
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace elastica;
+
+namespace {
+
+TriMesh cage(const std::string& name) { return io::readMesh(std::string(ELASTICA_DATA_DIR) + "/cages/" + name).mesh; }
+
+int genusOf(const TriMesh& m) {
+  const Topology t(m.vertexCount(), m.faces);
+  EXPECT_EQ(t.boundaryEdgeCount(), 0);
+  return (2 - (m.vertexCount() - t.edgeCount() + m.faceCount())) / 2;
+}
+
+// The energy measured afresh from the mesh, with the given vertex areas.
+double energyWith(const TriMesh& m, VertexArea area) {
+  CurvatureMeasureOptions o;
+  o.area = area;
+  return measureCurvature(m, o).energy;
+}
+
+// R/r of a torus of revolution fitted to the surface: centre and axis from the area-weighted
+// centroid and second moments of the faces (independent of how the vertices are spread), then
+// R and r minimising Σ (dist(p, tube circle) − r)² over the vertices (Gauss–Newton).
+double fittedAspectRatio(const TriMesh& m) {
+  Vec3 c = Vec3::Zero();
+  double area = 0;
+  for (const Face& f : m.faces) {
+    const Vec3 &a = m.positions[f[0]], &b = m.positions[f[1]], &d = m.positions[f[2]];
+    const double w = 0.5 * (b - a).cross(d - a).norm();
+    c += w * (a + b + d) / 3;
+    area += w;
+  }
+  c /= area;
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (const Face& f : m.faces) {
+    const Vec3 &a = m.positions[f[0]], &b = m.positions[f[1]], &d = m.positions[f[2]];
+    const Vec3 q = (a + b + d) / 3 - c;
+    second += 0.5 * (b - a).cross(d - a).norm() * q * q.transpose();
+  }
+  const Vec3 axis = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(second).eigenvectors().col(0);
+  double R = 0, r = 0;
+  for (const Vec3& p : m.positions) {
+    const Vec3 q = p - c;
+    R += (q - q.dot(axis) * axis).norm() / m.vertexCount();
+  }
+  for (const Vec3& p : m.positions) {
+    const Vec3 q = p - c;
+    r += std::hypot((q - q.dot(axis) * axis).norm() - R, q.dot(axis)) / m.vertexCount();
+  }
+  for (int it = 0; it < 50; ++it) {
+    Eigen::Matrix2d JtJ = Eigen::Matrix2d::Zero();
+    Eigen::Vector2d Jtr = Eigen::Vector2d::Zero();
+    for (const Vec3& p : m.positions) {
+      const Vec3 q = p - c;
+      const double rho = (q - q.dot(axis) * axis).norm(), h = q.dot(axis);
+      const double d = std::hypot(rho - R, h);
+      const Eigen::Vector2d J(-(rho - R) / d, -1);
+      JtJ += J * J.transpose();
+      Jtr += J * (d - r);
+    }
+    const Eigen::Vector2d step = JtJ.ldlt().solve(-Jtr);
+    R += step[0];
+    r += step[1];
+  }
+  return R / r;
+}
+
+}  // namespace
+
+// A 5×5 quad torus (25 vertices, pentagonal tube, R/r 2.5), default fair --subdivide 3: the
+// Clifford torus, R/r = √2 within 2 % and E = 8π² within 3 %, with either vertex area (measured:
+// R/r 1.414 and 1.414, E 78.74 and 78.80 against 78.96).
+TEST(CageFairing, QuadTorusReachesTheCliffordTorus) {
+  for (VertexArea area : {VertexArea::Mixed, VertexArea::Barycentric}) {
+    TriMesh m = cage("torus_quad_5x5.off");
+    FlowOptions opt;
+    opt.area = area;
+    opt.subdivisionLevels = 3;
+    const FlowReport r = fair(m, opt);
+    EXPECT_EQ(r.stop, StopReason::Converged);
+    EXPECT_EQ(genusOf(m), 1);
+    EXPECT_EQ(test::selfIntersections(m), 0);
+    EXPECT_NEAR(fittedAspectRatio(m), std::sqrt(2.0), 0.02 * std::sqrt(2.0));
+    EXPECT_NEAR(energyWith(m, area), 8 * M_PI * M_PI, 0.03 * 8 * M_PI * M_PI);
+  }
+}
+
+// Genus-2 and genus-3 block cages (quads split along one diagonal): genus kept, no face crossing,
+// E below 4·8π + 4π(2g − 2), the bound the minimiser of each genus satisfies (its Willmore energy
+// is below 8π): 125.7 for g = 2, 150.8 for g = 3 (measured at --subdivide 2: 112.8 and 142.3; the
+// known genus-2 minimiser has about 112.8).
+TEST(CageFairing, HigherGenusCagesKeepTheirHandles) {
+  for (const auto& [name, genus] : {std::pair<std::string, int>{"genus2_blocks.off", 2}, {"genus3_blocks.off", 3}}) {
+    TriMesh m = cage(name);
+    ASSERT_EQ(genusOf(m), genus);
+    FlowOptions opt;
+    opt.subdivisionLevels = 2;
+    const FlowReport r = fair(m, opt);
+    EXPECT_EQ(r.stop, StopReason::Converged) << name;
+    EXPECT_EQ(genusOf(m), genus) << name;
+    EXPECT_EQ(test::selfIntersections(m), 0) << name;
+    EXPECT_LT(energyWith(m, VertexArea::Mixed), 4 * 8 * M_PI + 4 * M_PI * (2 * genus - 2)) << name;
+  }
+}
+
+// A CAD-like rod whose sides are triangles of aspect ratio ~47 and whose caps are fans from one
+// rim vertex becomes a round sphere: radius spread below 1 % about the least-squares sphere
+// (measured 0.0001 %), E within 2 % of 8π.
+TEST(CageFairing, SliverRodBecomesASphere) {
+  TriMesh m = cage("cad_rod_slivers.off");
+  double worstAspect = 0;
+  for (const Face& f : m.faces) {
+    double lo = 1e300, hi = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double l = (m.positions[f[k]] - m.positions[f[(k + 1) % 3]]).norm();
+      lo = std::min(lo, l), hi = std::max(hi, l);
+    }
+    worstAspect = std::max(worstAspect, hi / lo);
+  }
+  ASSERT_GT(worstAspect, 20);
+  FlowOptions opt;
+  opt.subdivisionLevels = 3;
+  fair(m, opt);
+  EXPECT_EQ(test::selfIntersections(m), 0);
+  EXPECT_LT(test::fittedRadii(m).spread(), 0.01);
+  EXPECT_NEAR(energyWith(m, VertexArea::Mixed), 8 * M_PI, 0.02 * 8 * M_PI);
+}
+
+// Tori of revolution R/r = 3 at three resolutions reach their plateau in at most 100 steps
+// (attempts, rejected ones included) each, not more at finer resolution (measured 85 / 67 / 75),
+// at R/r within 2 % of √2.
+TEST(CageFairing, TorusStepsDoNotGrowWithResolution) {
+  for (const auto& [u, v] : {std::pair<int, int>{48, 16}, {96, 32}, {192, 64}}) {
+    TriMesh m = shapes::torus(3, 1, u, v);
+    const FlowReport r = fair(m, FlowOptions{});
+    EXPECT_EQ(r.stop, StopReason::Converged) << u << "x" << v;
+    EXPECT_LE(r.steps, 100) << u << "x" << v;
+    EXPECT_NEAR(fittedAspectRatio(m), std::sqrt(2.0), 0.02 * std::sqrt(2.0)) << u << "x" << v;
+  }
+}
+
+// The pipeline is scale-covariant: every length it compares is relative to the mesh's own edges
+// and areas, so the cage at 2¹⁰ times its size comes out 2¹⁰ times larger, with the same
+// remeshing and flips (same vertex and face counts) and positions within 1e-9 of the size. (A
+// power of two scales every floating-point operation exactly; with 1000 the last bits differ and
+// a step or flip decided at its threshold goes the other way.)
+TEST(CageFairing, PipelineIsScaleCovariant) {
+  constexpr double kScale = 1024;
+  const TriMesh small = cage("hex_nut.off");
+  TriMesh large = small;
+  for (Vec3& p : large.positions) p *= kScale;
+  TriMesh a = small, b = large;
+  FlowOptions opt;
+  opt.subdivisionLevels = 2;
+  const FlowReport ra = fair(a, opt), rb = fair(b, opt);
+  EXPECT_EQ(ra.steps, rb.steps);
+  ASSERT_EQ(a.vertexCount(), b.vertexCount());
+  ASSERT_EQ(a.faces, b.faces);
+  double worst = 0;
+  for (int i = 0; i < a.vertexCount(); ++i) worst = std::max(worst, (b.positions[i] / kScale - a.positions[i]).norm());
+  EXPECT_LT(worst, 1e-9 * 4);  // the nut is 4 across
+}
