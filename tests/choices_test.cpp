@@ -31,7 +31,7 @@ TEST(Choices, EveryEnumeratorHasOneNamedEntry) {
   expectComplete({VertexArea::Mixed, VertexArea::Barycentric});
   expectComplete({FillStage::Triangulation, FillStage::Refinement, FillStage::Biharmonic, FillStage::Flow});
   expectComplete({StopReason::Converged, StopReason::Stalled, StopReason::MaxSteps, StopReason::MaxSeconds,
-                  StopReason::Cancelled, StopReason::Diverged});
+                  StopReason::Cancelled, StopReason::Diverged, StopReason::Shrunk});
 }
 
 // .mlx scripts store a RichEnum as its index: the menus' order is fixed forever.

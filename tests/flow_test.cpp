@@ -8,6 +8,7 @@
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
 #include <elastica/shapes.h>
+#include <elastica/subdivision.h>
 
 #include <gtest/gtest.h>
 
@@ -225,4 +226,21 @@ TEST(Flow, DivergenceRestoresTheLastGoodState) {
   // The restored state is one that passed the checks: finite, size within a factor 2 per check.
   for (const Vec3& p : m.positions) EXPECT_TRUE(p.allFinite());
   EXPECT_LT(meanEdgeLength(topo, m.positions), 10 * edge0);
+}
+
+// The bilaplacian comparison flow shrinks the tubular cage until its bars collapse (paper Fig. 5):
+// a normal stop that says so (StopReason::Shrunk), with the last state checked before the
+// collapse — smaller than the start, finite — not a divergence error.
+TEST(Flow, ShrinkingComparisonFlowStopsAsShrunk) {
+  TriMesh m = shapes::frameCage(2, 1);
+  subdivideMidpoint(m);
+  const Topology topo(m.vertexCount(), m.faces);
+  const double edge0 = meanEdgeLength(topo, m.positions);
+  FlowOptions opt = explicitOptions();
+  opt.flow = FlowType::Bilaplacian;
+  FlowReport r;
+  ASSERT_NO_THROW(r = fair(m, opt));
+  EXPECT_EQ(r.stop, StopReason::Shrunk);
+  for (const Vec3& p : m.positions) EXPECT_TRUE(p.allFinite());
+  EXPECT_LT(meanEdgeLength(topo, m.positions), edge0);
 }

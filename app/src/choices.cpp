@@ -55,7 +55,8 @@ const std::vector<Choice<StopReason>>& choices<StopReason>() {
       {StopReason::MaxSteps, "max_steps", "stopped at maxSteps"},
       {StopReason::MaxSeconds, "max_seconds", "stopped at the time limit"},
       {StopReason::Cancelled, "cancelled", "cancelled"},
-      {StopReason::Diverged, "diverged", "diverged"}};
+      {StopReason::Diverged, "diverged", "diverged"},
+      {StopReason::Shrunk, "shrunk", "stopped: the flow shrinks the surface (the comparison flows do)"}};
   return t;
 }
 

@@ -51,6 +51,9 @@ enum class StopReason {
   MaxSeconds,
   Cancelled,
   Diverged,
+  /// A comparison flow (bilaplacian, Laplacian of H) shrank the mesh: its mean edge length halved
+  /// between two checks or fell to a tenth of the stage's start. The mesh is the last state.
+  Shrunk,
 };
 
 /// Progress of a run, given to FlowOptions::progress.
