@@ -135,7 +135,7 @@ void runScript(const RunArgs& a) {
     };
     std::vector<std::string> summary;
     try {
-      summary = ea::applyFilter(id, vm, values, progress);
+      summary = ea::applyFilter(id, vm, values, progress).log;
     } catch (const Error& e) {
       if (drawn) std::fprintf(stderr, "\n");
       throw Error(a.script + ":" + std::to_string(f.line) + ": " + f.name + ": " + e.what() + "; nothing written");

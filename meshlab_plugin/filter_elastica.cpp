@@ -51,10 +51,15 @@ QString FilterElasticaPlugin::filterInfo(FilterIDType filter) const {
   return qs(ea::filterSpec(filterId(filter), {}).info);
 }
 
-// Filters > "Smoothing, Fairing and Deformation"; the curvature filter also under Normal/Curvature.
+// Fairing: Filters > "Smoothing, Fairing and Deformation"; the curvature filter there and under
+// "Normals, Curvatures and Orientation"; hole filling under "Remeshing, Simplification and
+// Reconstruction", beside MeshLab's Close Holes (which has class Remeshing).
 MeshFilterInterface::FilterClass FilterElasticaPlugin::getClass(QAction* action) {
-  if (filterId(ID(action)) == ea::FilterId::Curvature)
-    return FilterClass(MeshFilterInterface::Smoothing | MeshFilterInterface::Normal);
+  switch (filterId(ID(action))) {
+    case ea::FilterId::Curvature: return FilterClass(MeshFilterInterface::Smoothing | MeshFilterInterface::Normal);
+    case ea::FilterId::FillHoles: return MeshFilterInterface::Remeshing;
+    case ea::FilterId::Fairing: break;
+  }
   return MeshFilterInterface::Smoothing;
 }
 
@@ -62,15 +67,25 @@ int FilterElasticaPlugin::getRequirements(QAction*) { return MeshModel::MM_NONE;
 
 int FilterElasticaPlugin::getPreConditions(QAction*) const { return MeshModel::MM_FACENUMBER; }
 
+// MeshLab 2020.09 asks for the post-condition twice: when the dialog opens (a mask without vertex
+// or face numbers makes the filter previewable: rerun at every change of a parameter, with only
+// the masked attributes saved for undoing it) and after applyFilter (the attributes whose render
+// buffers it refreshes and whose display it turns on, even after a failed run). So the dialog gets
+// the declared mask (fairing and filling may change the connectivity: not previewable) and the
+// refresh gets what the run changed: a failed run, or a fill without holes, changes nothing, and
+// quality and colour count only when the run wrote them. (MeshLab 2022.02 made this the
+// applyFilter's postConditionMask out-parameter.)
 int FilterElasticaPlugin::postCondition(QAction* action) const {
-  if (filterId(ID(action)) == ea::FilterId::Curvature)
-    return MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
-  return MeshModel::MM_ALL;  // fairing may subdivide: connectivity changes
+  const ea::FilterId id = filterId(ID(action));
+  if (const std::optional<int>& ran = lastRunMask_[static_cast<size_t>(id)]) return *ran;
+  if (id == ea::FilterId::Curvature) return MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
+  return MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE;
 }
 
 MeshFilterInterface::FILTER_ARITY FilterElasticaPlugin::filterArity(QAction*) const { return SINGLE_MESH; }
 
 void FilterElasticaPlugin::initParameterSet(QAction* action, MeshModel& m, RichParameterList& params) {
+  lastRunMask_[static_cast<size_t>(ID(action))].reset();  // a dialog opens: postCondition declares
   const ea::FilterSpec spec = ea::filterSpec(filterId(ID(action)), ea::meshFacts(m.cm));
   for (const ea::ParamSpec& p : spec.params) {
     const QString name = qs(p.name), label = qs(p.label), tip = qs(p.tooltip);
@@ -91,6 +106,8 @@ void FilterElasticaPlugin::initParameterSet(QAction* action, MeshModel& m, RichP
 bool FilterElasticaPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& params,
                                        vcg::CallBackPos* cb) {
   std::string name = "Discrete Elastica";
+  std::optional<int>& runMask = lastRunMask_[static_cast<size_t>(ID(action))];
+  runMask = int(MeshModel::MM_NONE);  // until it succeeds
   try {
     MeshModel* mm = md.mm();
     if (mm == nullptr) throw elastica::InvalidInputError("no current mesh");
@@ -101,10 +118,25 @@ bool FilterElasticaPlugin::applyFilter(QAction* action, MeshDocument& md, const 
     ea::Progress progress;
     if (cb) progress = [cb](int percent, const std::string& what) { return cb(percent, what.c_str()); };
 
-    const std::vector<std::string> summary = ea::applyFilter(id, mm->cm, values, progress);
-    if (ea::filterOutputs(id, values).curvature) mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
-    mm->UpdateBoxAndNormals();
-    for (const std::string& line : summary) Log("%s: %s", name.c_str(), line.c_str());
+    const ea::AppliedFilter applied = ea::applyFilter(id, mm->cm, values, progress);
+    const ea::MeshChanges& changed = applied.changed;
+    int mask = MeshModel::MM_NONE;
+    if (changed.positions) mask |= MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL;
+    if (changed.connectivity) mask |= MeshModel::MM_GEOMETRY_AND_TOPOLOGY_CHANGE;
+    if (changed.selection) mask |= MeshModel::MM_FACEFLAGSELECT | MeshModel::MM_VERTFLAGSELECT;
+    if (changed.curvature) {
+      mask |= MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR;
+      mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
+    }
+    if (changed.positions || changed.connectivity) mm->UpdateBoxAndNormals();
+    runMask = mask;
+    static const std::string kWarning = "warning: ";
+    for (const std::string& line : applied.log) {
+      if (line.compare(0, kWarning.size(), kWarning) == 0)
+        Log(GLLogStream::WARNING, "%s: %s", name.c_str(), line.c_str());
+      else
+        Log("%s: %s", name.c_str(), line.c_str());
+    }
     return true;
   } catch (const std::bad_alloc&) {
     errorMessage = qs(name + ": out of memory; the mesh is unchanged");

@@ -8,6 +8,9 @@
 
 #include <QObject>
 
+#include <array>
+#include <optional>
+
 class FilterElasticaPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
   MESHLAB_PLUGIN_IID_EXPORTER(MESH_FILTER_INTERFACE_IID)
@@ -30,4 +33,10 @@ class FilterElasticaPlugin : public QObject, public MeshFilterInterface {
   /// Never throws: a failure sets errorMessage, logs it (meshlabserver prints only the log) and
   /// returns false with the mesh unchanged.
   bool applyFilter(QAction* action, MeshDocument& md, const RichParameterList& params, vcg::CallBackPos* cb) override;
+
+ private:
+  /// What the last run of each filter changed, as a MeshLab mask (MM_NONE after a failure), for
+  /// postCondition; unset until it runs and again when its dialog opens (initParameterSet), so
+  /// that the dialog sees the declared mask.
+  std::array<std::optional<int>, 3> lastRunMask_;
 };

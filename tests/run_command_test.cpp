@@ -71,12 +71,31 @@ TEST_F(RunCommand, MissingParametersWarnAndTakeDefaults) {
   const CommandResult r = runElastica("run -i " + input + " -o " + output + " -s " + kScripts +
                                       "/fairing_missing_parameters.mlx");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* name : {"flow", "scheme", "subdivisionLevels", "energyTolerance", "tangentialDrift", "boundary",
+  for (const char* name : {"flow", "scheme", "maxSeconds", "subdivisionLevels", "energyTolerance", "tangentialDrift", "boundary",
                            "Selected", "colorByMeanCurvature"})
     EXPECT_NE(r.output.find("does not set '" + std::string(name) + "'; using its default"), std::string::npos) << name;
   EXPECT_EQ(r.output.find("does not set 'maxSteps'"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find(" 5 steps"), std::string::npos) << r.output;  // the script's maxSteps was used (the default scheme converges in ~20)
   EXPECT_TRUE(std::filesystem::exists(output));
+}
+
+// Every shipped script lists every parameter of its filters (Debian's meshlabserver aborts on a
+// script that leaves one out, and `elastica run` would warn): maxSeconds included.
+TEST_F(RunCommand, ShippedScriptsListEveryParameter) {
+  const std::filesystem::path examples = std::filesystem::path(kScripts) / "../../../meshlab_plugin/examples";
+  int checked = 0;
+  for (const auto& dir : {std::filesystem::path(kScripts), examples})
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      const std::string name = entry.path().filename().string();
+      if (entry.path().extension() != ".mlx" || name == "fairing_missing_parameters.mlx" ||
+          name == "unknown_filter.mlx")
+        continue;
+      // The warnings come before any filter runs; the tiny sphere keeps the runs short.
+      const CommandResult r = runElastica("run -i " + input + " -o " + output + " -s " + entry.path().string());
+      EXPECT_EQ(r.output.find("does not set"), std::string::npos) << name << "\n" << r.output;
+      ++checked;
+    }
+  EXPECT_GE(checked, 6);
 }
 
 // An unknown filter is an error naming it, before any work: nothing is written.
@@ -100,10 +119,12 @@ TEST_F(RunCommand, BadParametersAreErrors) {
        "is given twice"},
       {fairing + "<Param type=\"RichEnum\" name=\"flow\" value=\"7\"/></filter>", "enum value 7 is not in 0..2"},
       {fairing + "<Param type=\"RichInt\" name=\"subdivisionLevels\" value=\"-1\"/></filter>",
-       "'subdivisionLevels' must be in 0..8"},
+       "'Subdivision levels' (subdivisionLevels) must be in 0..8"},
       {"<filter name=\"Fill Holes with Discrete Elastica\"><Param type=\"RichInt\" name=\"MaxHoleSize\" value=\"2\"/>"
        "</filter>",
-       "'MaxHoleSize' must be >= 3"},
+       "'Max size to be closed' (MaxHoleSize) must be >= 3 (a hole has 3 edges or more)"},
+      {fairing + "<Param type=\"RichFloat\" name=\"maxSeconds\" value=\"-1\"/></filter>",
+       "'Time limit (s)' (maxSeconds) must be >= 0"},
       {"<filter name=\"Discrete Elastica Curvature\"><Param type=\"RichBool\" name=\"lambdaFix\"/></filter>",
        "has no value attribute"},
   };

@@ -7,8 +7,10 @@
 #include <elastica/topology.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <limits>
+#include <memory>
 
 namespace elastica::app {
 namespace {
@@ -19,15 +21,19 @@ std::string number(double x, const char* fmt = "%.6g") {
   return buf;
 }
 
+// A parameter as the user sees it: the dialog's label, then the .mlx name ('Maximum steps'
+// (maxSteps)), so a message reads right in MeshLab's dialog and next to a script alike.
+std::string describe(const ParamSpec& p) { return "'" + p.label + "' (" + p.name + ")"; }
+
 // The value of enum parameter `name`: its menu index (a script may carry any integer) looked up
 // in the choices table, which is also where the menu's entries come from.
 template <class E>
-E enumValue(const ParamValues& v, const std::string& name) {
+E enumValue(const ParamValues& v, const FilterSpec& spec, const std::string& name) {
   const int i = v.getEnum(name);
   const std::vector<Choice<E>>& table = choices<E>();
   const int n = static_cast<int>(table.size());
   if (i < 0 || i >= n)
-    throw InvalidInputError("parameter '" + name + "': enum value " + std::to_string(i) + " is not in 0.." +
+    throw InvalidInputError(describe(*spec.param(name)) + ": enum value " + std::to_string(i) + " is not in 0.." +
                             std::to_string(n - 1));
   return table[static_cast<std::size_t>(i)].value;
 }
@@ -45,25 +51,61 @@ double checkedNumber(const ParamValues& v, const FilterSpec& spec, const std::st
                           ? "in " + number(p.minValue) + ".." + number(p.maxValue)
                           : ">= " + number(p.minValue);
   if (!p.rangeHint.empty()) range += " (" + p.rangeHint + ")";
-  throw InvalidInputError("parameter '" + name + "' must be " + range);
+  throw InvalidInputError(describe(p) + " must be " + range);
 }
 
-// flow, scheme and maxSteps: the parameters every flow filter has.
+// flow, scheme, maxSteps and maxSeconds: the parameters every flow filter has. (maxSeconds came
+// later; a caller's values without it keep the core's "no limit".)
 void readFlowParameters(const ParamValues& v, const FilterSpec& spec, FlowOptions& o) {
-  o.flow = enumValue<FlowType>(v, "flow");
-  o.scheme = enumValue<Scheme>(v, "scheme");
+  o.flow = enumValue<FlowType>(v, spec, "flow");
+  o.scheme = enumValue<Scheme>(v, spec, "scheme");
   o.maxSteps = static_cast<long long>(checkedNumber(v, spec, "maxSteps"));
+  if (v.has("maxSeconds")) o.maxSeconds = checkedNumber(v, spec, "maxSeconds");
 }
 
-// MeshLab's progress from the flow's: the share of maxSteps taken.
-std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, long long maxSteps) {
+}  // namespace
+
+std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o) {
   if (!progress) return {};
-  const double steps = double(std::max<long long>(maxSteps, 1));
-  return [progress, steps](const FlowProgress& p) {
-    const int percent = static_cast<int>(std::min(99.0, 100.0 * double(p.step) / steps));
-    return progress(percent, "Elastica flow: level " + std::to_string(p.level) + ", step " + std::to_string(p.step) +
-                                 ", energy " + number(p.energy));
+  const auto start = std::chrono::steady_clock::now();
+  auto shown = std::make_shared<double>(0.0);  // the fraction shown last: progress never goes back
+  const double stages = double(std::max(o.subdivisionLevels, 0) + 1);
+  const double maxSeconds = o.maxSeconds;
+  const double maxSteps = double(o.maxSteps);
+  return [progress, start, shown, stages, maxSeconds, maxSteps](const FlowProgress& p) {
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double f = double(p.level) / stages;
+    if (maxSeconds > 0) f = std::max(f, seconds / maxSeconds);
+    if (maxSteps > 0) f = std::max(f, double(p.step) / maxSteps);
+    f = std::min(0.99, std::max(f, *shown));
+    *shown = f;
+    std::string what = "Elastica flow: level " + std::to_string(p.level) + ", step " + std::to_string(p.step) +
+                       ", energy " + number(p.energy) + ", " + number(seconds, "%.0f") + " s";
+    if (maxSeconds > 0) what += " of at most " + number(maxSeconds, "%.0f") + " s";
+    return progress(static_cast<int>(100.0 * f), what);
   };
+}
+
+namespace {
+
+// The warning for a flow that ended at one of its limits, naming the dialog field to change ("" if
+// it converged or stalled).
+std::string limitWarning(StopReason stop, const FilterSpec& spec, const FlowOptions& o) {
+  if (stop == StopReason::MaxSeconds)
+    return "warning: stopped at the time limit of " + number(o.maxSeconds) +
+           " s before the flow converged; the mesh is the state reached then. To let it run longer raise " +
+           describe(*spec.param("maxSeconds")) + " (0: no limit)" +
+           (o.scheme == Scheme::Explicit ? ", or choose the Semi-implicit 'Time integration', which needs far "
+                                           "fewer steps"
+                                         : "");
+  if (stop == StopReason::MaxSteps)
+    return "warning: stopped after " + std::to_string(o.maxSteps) +
+           " steps before the flow converged; the mesh is the state reached then. To let it run longer raise " +
+           describe(*spec.param("maxSteps")) +
+           (o.scheme == Scheme::Explicit ? ", or choose the Semi-implicit 'Time integration', which needs far "
+                                           "fewer steps"
+                                         : "");
+  return {};
 }
 
 }  // namespace
@@ -98,7 +140,7 @@ FlowOptions fairingOptions(const ParamValues& v) {
   const FilterSpec spec = filterSpec(FilterId::Fairing, {});
   FlowOptions o;
   readFlowParameters(v, spec, o);
-  o.boundary = enumValue<BoundaryMode>(v, "boundary");
+  o.boundary = enumValue<BoundaryMode>(v, spec, "boundary");
   o.subdivisionLevels = static_cast<int>(checkedNumber(v, spec, "subdivisionLevels"));
   o.energyTolerance = checkedNumber(v, spec, "energyTolerance");
   o.tangentialDrift = v.getBool("tangentialDrift");
@@ -135,9 +177,15 @@ FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, cons
   checkedTopology(mesh, /*rejectNonManifoldVertices=*/true);
   if (selected && std::count(selection.begin(), selection.end(), 1) == 0)
     throw InvalidInputError("'Affect only selected faces' is on, but no face is selected");
-  opt.progress = flowProgress(progress, opt.maxSteps);
+  opt.progress = flowProgress(progress, opt);
   if (!selected) selection.clear();
-  return runFairing(std::move(mesh), std::move(selection), opt, v.getBool("colorByMeanCurvature"));
+  FairingResult r = runFairing(std::move(mesh), std::move(selection), opt, v.getBool("colorByMeanCurvature"));
+  const std::string warning = limitWarning(r.report.stop, filterSpec(FilterId::Fairing, {}), opt);
+  if (!warning.empty()) r.log.push_back(warning);
+  if (selected && opt.subdivisionLevels > 0)
+    r.log.push_back("the whole mesh was subdivided (" + std::to_string(opt.subdivisionLevels) +
+                    " levels); only the selected faces moved, and they are selected in the refined mesh");
+  return r;
 }
 
 HoleFillOptions fillHolesOptions(const ParamValues& v) {
@@ -179,8 +227,18 @@ FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outp
 FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress& progress) {
   HoleFillOptions opt = fillHolesOptions(v);
   checkedTopology(mesh, /*rejectNonManifoldVertices=*/true);
-  opt.flow.progress = flowProgress(progress, opt.flow.maxSteps);
-  return runFillHoles(std::move(mesh), opt);
+  opt.flow.progress = flowProgress(progress, opt.flow);
+  FillHolesResult r = runFillHoles(std::move(mesh), opt);
+  const FilterSpec spec = filterSpec(FilterId::FillHoles, {});
+  std::string warning;
+  for (const HoleReport& h : r.report.holes)
+    if (warning.empty() && h.filled) warning = limitWarning(h.stop, spec, opt.flow);
+  if (!warning.empty()) r.log.push_back(warning);
+  if (r.report.holes.empty())
+    r.log = {"the mesh has no holes: nothing to fill; the mesh and its selection are unchanged"};
+  else if (r.report.filledCount() == 0)
+    r.log.push_back("no hole was filled: the mesh and its selection are unchanged");
+  return r;
 }
 
 CurvatureResult runCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt) {
@@ -206,7 +264,7 @@ CurvatureResult runCurvature(const TriMesh& mesh, const CurvatureMeasureOptions&
 
 CurvatureResult runCurvature(const TriMesh& mesh, const ParamValues& v) {
   CurvatureMeasureOptions opt;
-  opt.area = enumValue<VertexArea>(v, "area");
+  opt.area = enumValue<VertexArea>(v, filterSpec(FilterId::Curvature, {}), "area");
   opt.curvature.h2k = v.getBool("lambdaFix") ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
   const Topology topo = checkedTopology(mesh, /*rejectNonManifoldVertices=*/false);
   const int nonManifold = topo.nonManifoldVertexCount();  // counted per call

@@ -7,7 +7,7 @@
 set -euo pipefail
 prefix_script=$1 plugin=$2 prefix=$3 mesh=$4 artefacts=$5
 title="Discrete Elastica Fairing"
-fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
+source "$(dirname "$0")/gui_lib.sh"   # fail, wait_window
 [[ -n "${DISPLAY:-}" ]] || fail "no X display (run under xvfb-run -a)"
 for tool in xdotool import; do command -v $tool >/dev/null || fail "$tool not installed (scripts/setup.sh)"; done
 
@@ -20,19 +20,8 @@ meshlab_pid=
 cleanup() { [[ -n "$meshlab_pid" ]] && kill "$meshlab_pid" 2>/dev/null; rm -rf "$home"; }
 trap cleanup EXIT
 HOME=$home "$prefix/bin/meshlab" "$mesh" >"$artefacts/meshlab.log" 2>&1 &
-meshlab_pid=$!
+meshlab_pid=$! meshlab_log=$artefacts/meshlab.log
 
-# Polls `xdotool search --name PATTERN` for up to $2 seconds; prints the first window id.
-wait_window() {
-  local deadline=$((SECONDS + $2)) id
-  while ((SECONDS < deadline)); do
-    id=$(xdotool search --name "$1" 2>/dev/null | head -n1) || true
-    [[ -n "$id" ]] && { echo "$id"; return 0; }
-    kill -0 "$meshlab_pid" 2>/dev/null || fail "meshlab exited early (see $artefacts/meshlab.log)"
-    sleep 0.2
-  done
-  return 1
-}
 
 main=$(wait_window '^MeshLab 20' 20) || fail "MeshLab's main window did not appear in 20 s"
 # The dialog must not be there before we ask for it (so finding it below means something).

@@ -4,10 +4,15 @@
 #include "filter_elastica.h"
 
 #include <elastica/shapes.h>
+#include <elastica/app/filter_run.h>
 
 #include <gtest/gtest.h>
 
+#include <QTextDocument>
+
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -77,15 +82,163 @@ class PluginFilter : public ::testing::Test {
 
 }  // namespace
 
-TEST_F(PluginFilter, FiltersAreInSmoothingClass) {
+// Fairing and curvature under Smoothing, Fairing and Deformation; hole filling under Remeshing,
+// beside MeshLab's Close Holes.
+TEST_F(PluginFilter, FiltersAreInTheirMenus) {
   QStringList names;
-  for (QAction* a : plugin.actions()) {
-    names << a->text();
-    EXPECT_TRUE(plugin.getClass(a) & MeshFilterInterface::Smoothing) << a->text().toStdString();
-  }
+  for (QAction* a : plugin.actions()) names << a->text();
   EXPECT_TRUE(names.contains("Discrete Elastica Fairing"));
   EXPECT_TRUE(names.contains("Fill Holes with Discrete Elastica"));
   EXPECT_TRUE(names.contains("Discrete Elastica Curvature"));
+  EXPECT_EQ(int(plugin.getClass(action("Discrete Elastica Fairing"))), int(MeshFilterInterface::Smoothing));
+  EXPECT_EQ(int(plugin.getClass(action("Fill Holes with Discrete Elastica"))), int(MeshFilterInterface::Remeshing));
+  EXPECT_EQ(int(plugin.getClass(action("Discrete Elastica Curvature"))),
+            int(MeshFilterInterface::Smoothing | MeshFilterInterface::Normal));
+}
+
+// Every help string as MeshLab shows it: a parameter's help under its field is Qt rich text
+// ("<small>" + tooltip + "</small>", ml_std_par_dialog / richparameterwidgets.cpp) and its tooltip
+// auto-detected, so labels and tooltips carry no markup characters and read back unchanged; the
+// filter's description is HTML ("<i>" + info + "</i>") and must leave no tag text behind (a raw
+// "H^2 < K ... >= 0.5" once swallowed everything between them).
+TEST_F(PluginFilter, HelpTextsReadTheSameAsRichText) {
+  fill(mm->cm, elastica::shapes::icosphere(1.0, 1));
+  const auto rendered = [](const QString& html) {
+    QTextDocument d;
+    d.setHtml(html);
+    return d.toPlainText().simplified();
+  };
+  int strings = 0;
+  for (QAction* a : plugin.actions()) {
+    const std::string filter = a->text().toStdString();
+    RichParameterList params;
+    plugin.initParameterSet(a, doc, params);
+    ASSERT_FALSE(params.isEmpty()) << filter;
+    for (const RichParameter& p : params) {
+      for (const QString& text : {p.fieldDescription(), p.toolTip()}) {
+        EXPECT_FALSE(text.contains('<') || text.contains('>') || text.contains('&'))
+            << filter << " / " << p.name().toStdString() << ": " << text.toStdString();
+        EXPECT_EQ(rendered("<small>" + text + "</small>"), text.simplified()) << filter << " / " << p.name().toStdString();
+        EXPECT_FALSE(text.isEmpty()) << filter << " / " << p.name().toStdString();
+        ++strings;
+      }
+    }
+    const QString info = rendered("<i>" + plugin.filterInfo(plugin.ID(a)) + "</i>");
+    EXPECT_FALSE(info.contains('<') || info.contains('>')) << filter << ": " << info.toStdString();
+    EXPECT_TRUE(info.endsWith("Geometric Modeling and Processing 2002, pp. 119-123.")) << info.toStdString();
+    ++strings;
+  }
+  EXPECT_EQ(strings, 2 * (10 + 6 + 2) + 3);  // fairing, fill and curvature parameters; 3 descriptions
+}
+
+// The time limit: a parameter of every flow filter (60 s by default); reaching it keeps the mesh
+// as the flow left it and logs a warning that names the dialog's field. Progress meanwhile moves
+// with the time used: never back, no big jumps, near the end when the limit ends the run.
+TEST_F(PluginFilter, TimeLimitStopsWithAWarningAndProgressMovesEvenly) {
+  EXPECT_FLOAT_EQ(defaults("Discrete Elastica Fairing").getFloat("maxSeconds"), 60.f);
+  EXPECT_FLOAT_EQ(defaults("Fill Holes with Discrete Elastica").getFloat("maxSeconds"), 60.f);
+  fillNoisySphere();
+  const Snapshot before = snapshot(mm->cm);
+  RichParameterList params = defaults("Discrete Elastica Fairing");
+  params.setValue("scheme", EnumValue(0));  // explicit: runs far past a short limit
+  params.setValue("energyTolerance", FloatValue(0.f));
+  params.setValue("maxSeconds", FloatValue(1.f));
+  static std::vector<int> percents;
+  percents.clear();
+  vcg::CallBackPos* record = [](const int pos, const char*) {
+    percents.push_back(pos);
+    return true;
+  };
+  ASSERT_TRUE(plugin.applyFilter(action("Discrete Elastica Fairing"), doc, params, record)) << plugin.errorMsg().toStdString();
+  EXPECT_NE(snapshot(mm->cm).coords, before.coords);
+  QStringList warnings;
+  for (const auto& [level, text] : log.logStringList())
+    if (level == GLLogStream::WARNING) warnings << text;
+  ASSERT_EQ(warnings.size(), 1) << logLines(log).join("\n").toStdString();
+  EXPECT_TRUE(warnings[0].contains("stopped at the time limit of 1 s")) << warnings[0].toStdString();
+  EXPECT_TRUE(warnings[0].contains("raise 'Time limit (s)' (maxSeconds)")) << warnings[0].toStdString();
+  ASSERT_GE(percents.size(), 10u);
+  EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
+  for (size_t i = 1; i < percents.size(); ++i) EXPECT_LE(percents[i] - percents[i - 1], 5) << i;
+  EXPECT_GE(percents.back(), 90);
+  EXPECT_LE(percents.back(), 99);
+}
+
+// The progress function alone: the share of the time limit, of the steps and of the stages.
+TEST(FlowProgress, TimeStepsAndStages) {
+  std::vector<int> seen;
+  elastica::FlowOptions o;
+  o.maxSeconds = 0.4;
+  o.maxSteps = 1000;
+  o.subdivisionLevels = 1;
+  const auto progress = elastica::app::flowProgress(
+      [&](int percent, const std::string&) {
+        seen.push_back(percent);
+        return true;
+      },
+      o);
+  elastica::FlowProgress p;
+  progress(p);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  progress(p);
+  p.level = 1;  // the second of two stages begun
+  progress(p);
+  p.level = 0;
+  p.step = 900;
+  progress(p);
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  progress(p);
+  ASSERT_EQ(seen.size(), 5u);
+  EXPECT_LE(seen[0], 5);
+  EXPECT_NEAR(seen[1], 50, 10);
+  EXPECT_GE(seen[2], 50);
+  EXPECT_EQ(seen[3], 90);
+  EXPECT_EQ(seen[4], 99);  // capped: 100 is MeshLab's "done"
+  EXPECT_TRUE(elastica::app::flowProgress({}, o) == nullptr);
+}
+
+// The post-condition says what the run changed, so MeshLab refreshes (and turns on the display
+// of) only that: before a run the declared mask (fairing and filling change the connectivity, so
+// no preview); after a failure nothing; quality and colour only when asked for.
+TEST_F(PluginFilter, PostConditionNamesWhatTheRunChanged) {
+  QAction* fairing = action("Discrete Elastica Fairing");
+  QAction* curvature = action("Discrete Elastica Curvature");
+  fillNoisySphere();
+  RichParameterList params = defaults("Discrete Elastica Fairing");
+  EXPECT_TRUE(plugin.postCondition(fairing) & MeshModel::MM_VERTNUMBER);
+  EXPECT_EQ(plugin.postCondition(curvature), int(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR));
+  params.setValue("maxSteps", IntValue(5));
+  ASSERT_TRUE(plugin.applyFilter(fairing, doc, params, nullptr)) << plugin.errorMsg().toStdString();
+  const int faired = plugin.postCondition(fairing);
+  EXPECT_TRUE(faired & MeshModel::MM_VERTCOORD);
+  EXPECT_TRUE(faired & MeshModel::MM_VERTNORMAL);
+  EXPECT_FALSE(faired & (MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTQUALITY | MeshModel::MM_FACECOLOR |
+                         MeshModel::MM_FACEQUALITY | MeshModel::MM_WEDGTEXCOORD));
+  params.setValue("colorByMeanCurvature", BoolValue(true));
+  ASSERT_TRUE(plugin.applyFilter(fairing, doc, params, nullptr));
+  EXPECT_TRUE(plugin.postCondition(fairing) & MeshModel::MM_VERTCOLOR);
+  EXPECT_FALSE(plugin.postCondition(fairing) & MeshModel::MM_FACECOLOR);
+  params.setValue("Selected", BoolValue(true));  // nothing selected: fails
+  EXPECT_FALSE(plugin.applyFilter(fairing, doc, params, nullptr));
+  EXPECT_EQ(plugin.postCondition(fairing), int(MeshModel::MM_NONE));
+  defaults("Discrete Elastica Fairing");  // the dialog opens again: the declared mask
+  EXPECT_TRUE(plugin.postCondition(fairing) & MeshModel::MM_VERTNUMBER);
+}
+
+// Hole filling on a closed mesh: nothing to do, said plainly; the mesh and its selection stay.
+TEST_F(PluginFilter, FillOnAClosedMeshKeepsTheSelection) {
+  fillNoisySphere();
+  mm->cm.face[2].SetS();
+  mm->cm.face[7].SetS();
+  const Snapshot before = snapshot(mm->cm);
+  QAction* fillHoles = action("Fill Holes with Discrete Elastica");
+  ASSERT_TRUE(plugin.applyFilter(fillHoles, doc, defaults("Fill Holes with Discrete Elastica"), nullptr))
+      << plugin.errorMsg().toStdString();
+  EXPECT_TRUE(snapshot(mm->cm) == before);
+  for (size_t f = 0; f < mm->cm.face.size(); ++f) EXPECT_EQ(mm->cm.face[f].IsS(), f == 2 || f == 7) << f;
+  EXPECT_TRUE(logLines(log).join("\n").contains("the mesh has no holes: nothing to fill; the mesh and its selection are unchanged"))
+      << logLines(log).join("\n").toStdString();
+  EXPECT_EQ(plugin.postCondition(fillHoles), int(MeshModel::MM_NONE));
 }
 
 TEST_F(PluginFilter, SelectedDefaultFollowsTheMeshSelection) {
@@ -150,6 +303,7 @@ TEST_F(PluginFilter, FairingMovesVerticesAndLogsEnergy) {
   EXPECT_NE(after.quality, before.quality);  // H stored as quality
   EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTQUALITY));
   EXPECT_TRUE(logLines(log).join("\n").contains("stopped at maxSteps")) << logLines(log).join("\n").toStdString();
+  EXPECT_TRUE(logLines(log).join("\n").contains("raise 'Maximum steps' (maxSteps)")) << logLines(log).join("\n").toStdString();
 }
 
 // Hole filling appends: the original vertices keep their positions and colours, the new faces
@@ -176,4 +330,8 @@ TEST_F(PluginFilter, FillHolesAppendsAndSelectsNewFaces) {
   EXPECT_TRUE(std::equal(before.faces.begin(), before.faces.end(), after.faces.begin()));
   for (size_t f = 0; f < mm->cm.face.size(); ++f) EXPECT_EQ(mm->cm.face[f].IsS(), f >= kept.size()) << f;
   EXPECT_TRUE(logLines(log).join("\n").contains("filled 1 of 1 holes")) << logLines(log).join("\n").toStdString();
+  const int changed = plugin.postCondition(action("Fill Holes with Discrete Elastica"));
+  EXPECT_TRUE(changed & MeshModel::MM_FACENUMBER);
+  EXPECT_TRUE(changed & MeshModel::MM_FACEFLAGSELECT);
+  EXPECT_FALSE(changed & (MeshModel::MM_VERTCOLOR | MeshModel::MM_FACECOLOR | MeshModel::MM_VERTQUALITY));
 }

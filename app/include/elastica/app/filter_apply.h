@@ -56,9 +56,11 @@ void writeBack(const FairingResult& r, VcgMeshT& m) {
 /// Writes a hole-filling result back into `m`, the mesh it was copied from: the new vertices and
 /// faces are appended and the original ones keep their attributes (copies of a point merged as
 /// the report says). With `selectNew`, only the new faces are selected afterwards, as MeshLab's
-/// Close Holes does. (The curvature, if the result carries it, is the caller's to store.)
+/// Close Holes does. When no hole was filled, `m` is left exactly as it was, selection included.
+/// (The curvature, if the result carries it, is the caller's to store.)
 template <class VcgMeshT>
 void writeBack(const FillHolesResult& r, VcgMeshT& m, bool selectNew) {
+  if (r.report.filledCount() == 0 && r.report.welds.empty()) return;
   // Compacting makes vcg indices the TriMesh indices (toTriMesh skips deleted elements).
   vcg::tri::Allocator<VcgMeshT>::CompactEveryVector(m);
   applyWelds(r.report.welds, m);
@@ -72,25 +74,53 @@ void writeBack(const FillHolesResult& r, VcgMeshT& m, bool selectNew) {
   updateBoxAndNormals(m);
 }
 
-/// Runs filter `id` with values `v` on `m`. Returns summary lines for the user.
+/// What applying a filter changed in the mesh (for a host that must be told, as MeshLab's
+/// post-conditions; all false when nothing changed).
+struct MeshChanges {
+  bool positions = false;     ///< vertex positions (and so normals and the bounding box)
+  bool connectivity = false;  ///< vertices or faces added, removed or rewired (all else reset)
+  bool selection = false;     ///< the face (and vertex) selection
+  bool curvature = false;     ///< vertex quality and colour, mean/gaussian_curvature attributes
+  bool any() const { return positions || connectivity || selection || curvature; }
+};
+
+/// A filter applied: its summary lines for the user (a line starting "warning: " is one) and
+/// what it changed.
+struct AppliedFilter {
+  std::vector<std::string> log;
+  MeshChanges changed;
+};
+
+/// Runs filter `id` with values `v` on `m`.
 /// @throws elastica::Error (and std::bad_alloc) with `m` unchanged.
 template <class VcgMeshT>
-std::vector<std::string> applyFilter(FilterId id, VcgMeshT& m, const ParamValues& v, const Progress& progress) {
+AppliedFilter applyFilter(FilterId id, VcgMeshT& m, const ParamValues& v, const Progress& progress) {
+  AppliedFilter a;
   if (id == FilterId::Curvature) {
     CurvatureResult r = runCurvature(toTriMesh(m), v);
     storeCurvature(m, r.outputH(), r.curvature.K);
-    return std::move(r.log);
+    a.changed.curvature = true;
+    a.log = std::move(r.log);
+    return a;
   }
   if (id == FilterId::FillHoles) {
     FillHolesResult r = runFillHoles(toTriMesh(m), v, progress);
     writeBack(r, m, v.getBool("NewFaceSelected"));
-    return std::move(r.log);
+    const bool changed = r.report.filledCount() > 0 || !r.report.welds.empty();
+    a.changed.positions = a.changed.connectivity = changed;
+    a.changed.selection = changed && v.getBool("NewFaceSelected");
+    a.log = std::move(r.log);
+    return a;
   }
   const bool selected = v.getBool("Selected");
   FairingResult r = runFairing(toTriMesh(m), selected ? faceSelection(m) : std::vector<std::uint8_t>{}, v, progress);
   writeBack(r, m);
   if (r.outputCurvature) storeCurvature(m, r.curvature.H, r.curvature.K);
-  return std::move(r.log);
+  a.changed.positions = true;
+  a.changed.connectivity = a.changed.selection = r.connectivityChanged;
+  a.changed.curvature = r.outputCurvature;
+  a.log = std::move(r.log);
+  return a;
 }
 
 }  // namespace elastica::app

@@ -22,6 +22,12 @@ namespace elastica::app {
 /// Progress of a long filter: a percentage and a line of text. Returning false cancels.
 using Progress = std::function<bool(int percent, const std::string& what)>;
 
+/// The flow's progress as a face shows it: the larger of the share of the time limit used
+/// (o.maxSeconds, wall time from this call), of o.maxSteps taken and of the coarse-to-fine stages
+/// begun, capped at 99 % and never going back; so it moves with the time used instead of creeping
+/// along the share of a large maxSteps and jumping at the end. Empty if `progress` is.
+std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o);
+
 /// Whether an input error names MeshLab's repair filters.
 enum class RepairHints { None, MeshLab };
 

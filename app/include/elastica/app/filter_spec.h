@@ -30,7 +30,10 @@ struct ParamSpec {
   ParamType type = ParamType::Bool;
   double defaultValue = 0;              ///< bool as 0/1, int, float, or the enum index
   std::vector<std::string> enumValues;  ///< RichEnum entries, in index order
-  std::string label;                    ///< the dialog's field description
+  /// The dialog's field description, and the help shown under it and as its tooltip: plain text,
+  /// without '<', '>' or '&' (MeshLab shows the help as Qt rich text but the tooltip as plain
+  /// text, so only text without markup characters reads the same in both; tested).
+  std::string label;
   std::string tooltip;
   /// Int and Float: the accepted range, checked in one place (checkedNumber in filter_run.cpp)
   /// for the plugin's dialog and for .mlx scripts alike.
