@@ -21,15 +21,10 @@ DATA = os.environ["ELASTICA_DATA_DIR"]
 
 
 def mesh_object(name, V, F):
+    from elastica_blender import mesh_arrays  # importable once the add-on is enabled
+
     me = bpy.data.meshes.new(name)
-    me.vertices.add(len(V))
-    me.loops.add(3 * len(F))
-    me.polygons.add(len(F))
-    me.vertices.foreach_set("co", np.asarray(V, np.float32).ravel())
-    me.loops.foreach_set("vertex_index", np.asarray(F, np.int32).ravel())
-    me.polygons.foreach_set("loop_start", 3 * np.arange(len(F), dtype=np.int32))
-    me.polygons.foreach_set("loop_total", np.full(len(F), 3, np.int32))
-    me.update(calc_edges=True)
+    mesh_arrays.replace_geometry(me, V, F)
     assert not me.validate()
     ob = bpy.data.objects.new(name, me)
     bpy.context.scene.collection.objects.link(ob)
@@ -134,6 +129,14 @@ def test_fair_a_noisy_sphere_object():
     lifted_co = np.empty(3 * len(P), np.float32)
     keys["Lifted"].data.foreach_get("co", lifted_co)
     assert (lifted_co.reshape(-1, 3) == P0 + np.array([0, 0, 1], np.float32)).all()  # the other key is left alone
+
+
+def test_fair_with_remeshing_rebuilds_the_mesh():
+    ob = noisy_sphere("remeshed", level=2)  # 42 vertices; one subdivision: 162
+    before = radius_spread(positions(ob.data))
+    assert bpy.ops.mesh.elastica_fair(keep_connectivity=False, subdivide=1) == {'FINISHED'}
+    me = ob.data
+    assert not me.validate() and len(me.vertices) > 42 and radius_spread(positions(me)) < before / 5
 
 
 def test_edit_mode_fairs_the_selection_only():
