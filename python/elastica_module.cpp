@@ -5,6 +5,7 @@
 // subclass) and no array is returned.
 #include <elastica/app/choices.h>
 #include <elastica/app/filter_run.h>
+#include <elastica/app/filter_spec.h>
 #include <elastica/app/reports.h>
 #include <elastica/errors.h>
 #include <elastica/face_set.h>
@@ -19,6 +20,8 @@
 
 #include <cmath>
 #include <exception>
+#include <map>
+#include <stdexcept>
 #include <optional>
 #include <string>
 
@@ -183,7 +186,7 @@ auto withoutGil(PythonProgress& progress, Job job) {
 py::tuple fairArrays(const py::object& V, const py::object& F, const py::object& selectedFaces,
                      const std::string& flow, const std::optional<std::string>& scheme, int subdivide,
                      long long maxSteps, double maxSeconds, std::optional<double> energyTol, bool tangential,
-                     const std::string& boundary, const py::object& progress) {
+                     const std::string& boundary, bool remesh, bool flipEdges, const py::object& progress) {
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   std::vector<std::uint8_t> selection = selectionFrom(selectedFaces, mesh.faceCount());
@@ -196,6 +199,8 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   if (energyTol) opt.energyTolerance = *energyTol;
   opt.tangentialDrift = tangential;
   opt.boundary = choice<BoundaryMode>("boundary", boundary);
+  opt.remesh = remesh;
+  opt.flipEdges = flipEdges;
   PythonProgress hook{progress, nullptr};
   opt.progress = hook.hook();
   const int inV = mesh.vertexCount(), inF = mesh.faceCount();
@@ -259,6 +264,86 @@ void writeFile(const py::object& pathLike, const py::object& V, const py::object
   io::writePly(path, mesh, {}, !ascii);  // atomic: a failed write leaves no half-written file
 }
 
+// ---- the MeshLab filters' parameters, for faces that build dialogs (the Blender add-on) ---------
+
+// The Python keyword argument a filter parameter stands for; "" where the face decides (the
+// selection, colouring, selecting new faces).
+std::string keywordOf(const std::string& parameter) {
+  static const std::map<std::string, std::string> keywords = {
+      {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"},
+      {"subdivisionLevels", "subdivide"}, {"energyTolerance", "energy_tol"}, {"tangentialDrift", "tangential"},
+      {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"lambdaFix", "lambda_fix"},
+      {"area", "area"}};
+  const auto it = keywords.find(parameter);
+  return it == keywords.end() ? std::string() : it->second;
+}
+
+// The command-line words of a RichEnum's entries: the choices table whose labels they are.
+template <class E>
+bool wordsOf(const std::vector<std::string>& labels, std::vector<std::string>& words) {
+  if (app::labels<E>() != labels) return false;
+  for (const app::Choice<E>& c : app::choices<E>()) words.emplace_back(c.name);
+  return true;
+}
+std::vector<std::string> enumWords(const std::vector<std::string>& labels) {
+  std::vector<std::string> w;
+  if (wordsOf<FlowType>(labels, w) || wordsOf<Scheme>(labels, w) || wordsOf<BoundaryMode>(labels, w) ||
+      wordsOf<VertexArea>(labels, w) || wordsOf<H2KTreatment>(labels, w))
+    return w;
+  throw std::logic_error("no choices table for a RichEnum");  // a filter_spec.cpp change without one
+}
+
+py::dict filterSpecs() {
+  static const std::map<app::FilterId, const char*> function = {
+      {app::FilterId::Fairing, "fair"}, {app::FilterId::FillHoles, "fill_holes"}, {app::FilterId::Curvature, "curvature"}};
+  py::dict all;
+  for (const app::FilterSpec& f : app::allFilters({})) {
+    py::list params;
+    for (const app::ParamSpec& p : f.params) {
+      py::dict d;
+      d["name"] = p.name;
+      const std::string keyword = keywordOf(p.name);
+      d["keyword"] = keyword.empty() ? py::object(py::none()) : py::object(py::str(keyword));
+      d["label"] = p.label;
+      d["description"] = p.tooltip;
+      switch (p.type) {
+        case app::ParamType::Bool:
+          d["type"] = "bool";
+          d["default"] = p.defaultValue != 0;
+          break;
+        case app::ParamType::Int:
+          d["type"] = "int";
+          d["default"] = static_cast<long long>(p.defaultValue);
+          break;
+        case app::ParamType::Float:
+          d["type"] = "float";
+          d["default"] = p.defaultValue;
+          break;
+        case app::ParamType::Enum: {
+          d["type"] = "enum";
+          const std::vector<std::string> words = enumWords(p.enumValues);
+          d["choices"] = words;
+          d["labels"] = p.enumValues;
+          d["default"] = words.at(static_cast<std::size_t>(p.defaultValue));
+          break;
+        }
+      }
+      auto bound = [](double x) { return std::isfinite(x) ? py::object(py::float_(x)) : py::object(py::none()); };
+      if (p.type == app::ParamType::Int || p.type == app::ParamType::Float) {
+        d["min"] = bound(p.minValue);
+        d["max"] = bound(p.maxValue);
+      }
+      params.append(d);
+    }
+    py::dict spec;
+    spec["name"] = f.name;
+    spec["info"] = f.info;
+    spec["parameters"] = params;
+    all[function.at(f.id)] = spec;
+  }
+  return all;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(elastica, m) {
@@ -304,17 +389,21 @@ PYBIND11_MODULE(elastica, m) {
         py::arg("flow") = app::nameOf(flowDefaults.flow), py::arg("scheme") = py::none(), py::arg("subdivide") = 0,
         py::arg("max_steps") = flowDefaults.maxSteps, py::arg("max_seconds") = 0.0,
         py::arg("energy_tol") = py::none(), py::arg("tangential") = true,
-        py::arg("boundary") = app::nameOf(flowDefaults.boundary), py::arg("progress") = py::none(),
+        py::arg("boundary") = app::nameOf(flowDefaults.boundary), py::arg("remesh") = flowDefaults.remesh,
+        py::arg("flip_edges") = flowDefaults.flipEdges, py::arg("progress") = py::none(),
         (std::string("fair(V, F, selected_faces=None, *, flow='elastica', scheme=None, subdivide=0, max_steps=") +
          std::to_string(flowDefaults.maxSteps) +
-         ", max_seconds=0, energy_tol=None, tangential=True, boundary='fixed', progress=None)\n"
-         "    -> (V_out, F_out, report)\n\n"
+         ", max_seconds=0, energy_tol=None, tangential=True, boundary='fixed',\n"
+         "     remesh=True, flip_edges=False, progress=None) -> (V_out, F_out, report)\n\n"
          "Fairs the mesh with a curvature flow, as `elastica fair`: flow 'elastica' (F = -Lap H - 2H(H^2-K)),\n"
          "'lmc' or 'bilaplacian'; scheme 'explicit' or 'semi-implicit' (None: the core's default, '" +
          app::nameOf(flowDefaults.scheme) +
          "');\n"
          "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_seconds 0: no limit; energy_tol None: the\n"
-         "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. selected_faces: face indices\n"
+         "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (semi-implicit only): the\n"
+         "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
+         "guard), so F_out may differ from F; False keeps the connectivity (`--no-remesh`). flip_edges: flip\n"
+         "non-Delaunay edges at every check (`--remesh`). selected_faces: face indices\n"
          "or a bool mask; only vertices whose faces are all selected move. progress(dict) -> bool is called at\n"
          "every check with level, step, energy, lambda, seconds; return False to cancel (raises elastica.Error).\n"
          "report: the dict `elastica fair --report` writes (without file names).")
@@ -342,4 +431,12 @@ PYBIND11_MODULE(elastica, m) {
   m.def("write", &writeFile, py::arg("path"), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("ascii") = false,
         "write(path, V, F, *, ascii=False)\n\nWrites a PLY file (binary unless ascii) atomically: on failure the\n"
         "destination is left as it was.");
+  m.def("filters", &filterSpecs,
+        "filters() -> {'fair': spec, 'fill_holes': spec, 'curvature': spec}\n\n"
+        "The MeshLab filters' parameters, for a face that builds a dialog (the Blender add-on): each spec has\n"
+        "the filter's 'name' and 'info' (HTML) and 'parameters', a list of dicts with 'name' (the .mlx name),\n"
+        "'keyword' (this module's keyword argument, or None where the caller decides: the selection, colouring,\n"
+        "selecting new faces), 'type' ('bool', 'int', 'float', 'enum'), 'default', 'label', 'description', for\n"
+        "numbers 'min' and 'max' (None: unbounded), for enums 'choices' (keyword values) and 'labels' (menu).\n"
+        "Passing every keyword at its default runs what the MeshLab filter runs at its defaults.");
 }

@@ -28,6 +28,7 @@ PACKAGES=(
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev    # the MeshLab plugin and its integration tests
   xvfb xauth                                           # headless MeshLab for the plugin tests
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
+  blender                                              # the Blender add-on's tests (blender_addon/; 690 MB with its libraries)
   clang                                                # libFuzzer targets (scripts/fuzz.sh)
   libclang-rt-14-dev                                   # libFuzzer and sanitizer runtimes for clang
   libtinyxml2-dev                                      # .mlx filter scripts (elastica run)

@@ -202,3 +202,79 @@ def test_read_write_round_trip_and_errors(noisy, tmp_path):
     with pytest.raises(elastica.IoError):
         elastica.write(tmp_path / "out.obj", V, F)
     assert not (tmp_path / "out.obj").exists()
+
+
+def test_filters_describe_the_meshlab_parameters(tmp_path):
+    """filters(): every MeshLab parameter with its default; the keywords at those defaults run what
+    `elastica run` runs on the example scripts (which list every parameter at its default)."""
+    specs = elastica.filters()
+    assert set(specs) == {"fair", "fill_holes", "curvature"}
+    assert specs["fair"]["name"] == "Discrete Elastica Fairing"
+    for spec in specs.values():
+        for p in spec["parameters"]:
+            assert p["type"] in ("bool", "int", "float", "enum") and p["label"] and p["description"]
+            if p["type"] == "enum":
+                assert p["default"] in p["choices"] and len(p["choices"]) == len(p["labels"])
+    fair = {p["name"]: p for p in specs["fair"]["parameters"]}
+    assert fair["scheme"]["default"] == "semi-implicit" and fair["scheme"]["choices"] == ["explicit", "semi-implicit"]
+    assert fair["subdivisionLevels"]["min"] == 0 and fair["subdivisionLevels"]["max"] == 8
+    assert fair["Selected"]["keyword"] is None and fair["maxSteps"]["keyword"] == "max_steps"
+
+    def defaults(name):
+        return {p["keyword"]: p["default"] for p in specs[name]["parameters"] if p["keyword"]}
+
+    examples = os.path.join(os.path.dirname(DATA), "meshlab_plugin", "examples")
+    out = tmp_path / "fill.ply"
+    cli("run", "-i", BUNNY_HOLE, "-o", out, "-s", os.path.join(examples, "fill_holes.mlx"))
+    V2, F2, _, _ = elastica.fill_holes(*elastica.read(BUNNY_HOLE), **defaults("fill_holes"))
+    Vc, Fc = elastica.read(out)
+    assert same(V2, Vc) and (F2 == Fc).all()
+    sphere = tmp_path / "sphere.ply"
+    cli("generate", "icosphere", "--level", 2, "-o", sphere)
+    c = elastica.curvature(*elastica.read(sphere), **defaults("curvature"))
+    assert c["energy"] == elastica.curvature(*elastica.read(sphere))["energy"]
+    V, F = elastica.read(sphere)
+    elastica.fair(V, F, **{**defaults("fair"), "max_steps": 5})  # every keyword is accepted
+
+
+def test_cmake_install_puts_the_module_on_the_python_path(tmp_path):
+    """`cmake --install` with a prefix: the module lands in ELASTICA_PYTHON_INSTALL_DIR under it and
+    imports from there; for the default prefix /usr/local that directory is on the system Python's path."""
+    build, subdir = os.environ["ELASTICA_BUILD_DIR"], os.environ["ELASTICA_PYTHON_INSTALL_DIR"]
+    subprocess.run([os.environ["CMAKE_COMMAND"], "--install", build, "--component", "python", "--prefix", tmp_path],
+                   check=True, capture_output=True)
+    env = {**os.environ, "PYTHONPATH": str(tmp_path / subdir)}
+    where = subprocess.run(["/usr/bin/python3", "-c", "import elastica; print(elastica.__file__)"], env=env, cwd=tmp_path,
+                           check=True, capture_output=True, text=True).stdout
+    assert where.startswith(str(tmp_path / subdir))
+    system_path = subprocess.run(["/usr/bin/python3", "-c", "import sys; print('\\n'.join(sys.path))"], check=True,
+                                 capture_output=True, text=True, env={"PATH": os.environ["PATH"]}).stdout.split()
+    assert os.path.join("/usr/local", subdir) in system_path
+
+
+def readme_blocks(section, language):
+    """The fenced `language` blocks of the README section whose heading starts with `section`."""
+    text = open(os.environ["ELASTICA_README"]).read()
+    body = text.split("\n## " + section, 1)[1].split("\n## ", 1)[0]
+    return [b.split("\n```", 1)[0] for b in body.split("```" + language + "\n")[1:]]
+
+
+def test_the_readme_python_example_runs_as_written(tmp_path, monkeypatch):
+    (block,) = readme_blocks("The Python module", "python")
+    os.symlink(DATA, tmp_path / "data")
+    monkeypatch.chdir(tmp_path)
+    exec(compile(block, "README.md", "exec"), {})
+    V, F = elastica.read(tmp_path / "restored.ply")
+    assert len(F) > len(elastica.read(BUNNY_HOLE)[1])
+
+
+def test_remesh_and_flip_edges_are_the_cli_flags(noisy, tmp_path):
+    V, F = elastica.read(noisy)
+    for flags, kwargs in ((["--no-remesh"], {"remesh": False}), (["--remesh", "--no-remesh"], {"remesh": False, "flip_edges": True})):
+        out = tmp_path / "out.ply"
+        cli("fair", noisy, "-o", out, *flags)
+        V2, F2, r = elastica.fair(V, F, **kwargs)
+        Vc, Fc = elastica.read(out)
+        assert same(V2, Vc) and (F2 == Fc).all()
+    V2, F2, r = elastica.fair(V, F, remesh=False)
+    assert (F2 == F).all() and r["mesh_quality"]["remeshings"] == 0

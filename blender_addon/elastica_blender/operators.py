@@ -1,0 +1,241 @@
+"""The three operators. Their redo-panel properties are built from elastica.filters(): the MeshLab
+filters' parameters with their defaults, labels and ranges, so the add-on holds no numbers of its own.
+
+Edit Mode: the operator leaves Edit Mode once at its start and enters it again once at its end (a
+mode switch syncs the edit mesh; nothing toggles per step). Undo restores the mesh (REGISTER, UNDO).
+Errors (non-manifold meshes, nothing selected, a diverging flow, ...) are reported, never raised."""
+import traceback
+
+import bpy
+import numpy as np
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
+
+from . import mesh_arrays as ma
+
+try:
+    import elastica
+except ImportError as e:  # the add-on cannot work at all: say how to fix it when it is enabled
+    raise ImportError(
+        "Elastica: the Python module 'elastica' was not found (" + str(e) + "). Build the project and run "
+        "blender_addon/install.sh BUILD_DIR, which puts the module into Blender's scripts/modules folder, "
+        "or start Blender with --python-use-system-env and PYTHONPATH at build/python."
+    ) from e
+
+# Parameters the face decides rather than the module: the property each becomes (None: implied by
+# the mode, as Edit Mode's selection is).
+FACE_PROPERTIES = {"Selected": None, "colorByMeanCurvature": "color_by_mean_curvature",
+                   "NewFaceSelected": "select_new_faces"}
+
+
+def _property(p):
+    """A bpy property for one parameter of elastica.filters()."""
+    common = {"name": p["label"], "description": p["description"]}
+    if p["type"] == "bool":
+        return BoolProperty(default=p["default"], **common)
+    if p["type"] == "enum":
+        items = [(w, l, p["description"]) for w, l in zip(p["choices"], p["labels"])]
+        return EnumProperty(items=items, default=p["default"], **common)
+    bounds = {k: p[k] for k in ("min", "max") if p.get(k) is not None}
+    if p["type"] == "int":
+        bounds = {k: int(min(max(v, -2**31), 2**31 - 1)) for k, v in bounds.items()}
+        return IntProperty(default=int(p["default"]), **bounds, **common)
+    return FloatProperty(default=p["default"], precision=4, step=1, **bounds, **common)
+
+
+def _properties(filter_name):
+    """{property name: (parameter, bpy property)} in the MeshLab dialog's order."""
+    out = {}
+    for p in elastica.filters()[filter_name]["parameters"]:
+        name = p["keyword"] or FACE_PROPERTIES.get(p["name"])
+        if name:
+            out[name] = (p, _property(p))
+    return out
+
+
+class ElasticaOperator:
+    bl_options = {'REGISTER', 'UNDO'}
+    filter_name = ""
+    params = {}  # {property: (parameter, bpy property)}, set by _operator_class
+    extra = ()   # properties of the add-on's own, drawn after the parameters
+
+    @classmethod
+    def poll(cls, context):
+        ob = context.active_object
+        return ob is not None and ob.type == 'MESH' and context.mode in {'EDIT_MESH', 'OBJECT'}
+
+    def keywords(self):
+        """The module's keyword arguments from the redo panel's values."""
+        return {p["keyword"]: getattr(self, name) for name, (p, _) in self.params.items() if p["keyword"]}
+
+    def execute(self, context):
+        ob = context.active_object
+        edit = context.mode == 'EDIT_MESH'
+        wm = context.window_manager
+        if edit:
+            bpy.ops.object.mode_set(mode='OBJECT')  # once: syncs the edit mesh (selection included)
+        wm.progress_begin(0, 9999)
+        self._status(context, self.bl_label + "…")
+        try:
+            message = self.run(context, ob.data, edit)
+        except (elastica.Error, ValueError) as e:
+            self.report({'ERROR'}, f"{self.bl_label}: {e}")
+            return {'CANCELLED'}
+        except Exception as e:  # a bug of ours: report it rather than leave a traceback only
+            traceback.print_exc()
+            self.report({'ERROR'}, f"{self.bl_label} failed: {type(e).__name__}: {e}")
+            return {'CANCELLED'}
+        finally:
+            wm.progress_end()
+            self._status(context, None)
+            if edit:
+                bpy.ops.object.mode_set(mode='EDIT')
+        self.report({'INFO'}, message)
+        return {'FINISHED'}
+
+    def _status(self, context, text):
+        if context.workspace is not None:
+            context.workspace.status_text_set(text)
+
+    def progress(self, context):
+        """The module's progress callback: the step number on the cursor, the state on the status bar."""
+        wm = context.window_manager
+
+        def update(p):
+            wm.progress_update(min(int(p["step"]), 9999))
+            self._status(context, f"{self.bl_label}: stage {p['level']}, step {p['step']}, "
+                                  f"E = {p['energy']:.6g}, {p['seconds']:.1f} s")
+            return True
+        return update
+
+    @staticmethod
+    def check_shape_keys(me, what):
+        if me.shape_keys is not None:
+            raise ValueError(f"{what} changes the mesh's connectivity, which its shape keys cannot follow: "
+                             "apply or remove the shape keys first")
+
+    def draw(self, context):
+        layout = self.layout
+        layout.use_property_split = True
+        for name in (*self.params, *self.extra):
+            layout.prop(self, name)
+
+
+def measure_curvature(me, V, F, **kwargs):
+    """mean_curvature and gaussian_curvature point attributes, and mean_curvature_color by H (made
+    the active colour attribute). Returns elastica.curvature's dict."""
+    c = elastica.curvature(V, F, **kwargs)
+    ma.store_point_attribute(me, "mean_curvature", 'FLOAT', c["H"], "value")
+    ma.store_point_attribute(me, "gaussian_curvature", 'FLOAT', c["K"], "value")
+    color = ma.store_point_attribute(me, "mean_curvature_color", 'FLOAT_COLOR', ma.ramp_colors(c["H"]), "color")
+    me.color_attributes.active_color = color
+    me.update()
+    return c
+
+
+class MESH_OT_elastica_fair_base(ElasticaOperator):
+    bl_idname = "mesh.elastica_fair"
+    bl_label = "Elastica Fairing"
+    bl_description = ("Fair with the discrete elastica flow (Edit Mode: the selected faces, two rings around "
+                      "them fixed; Object Mode: the whole mesh). Works on the mesh in object space")
+    filter_name = "fair"
+    extra = ("keep_connectivity",)
+
+    def run(self, context, me, edit):
+        arrays = ma.MeshArrays(me)
+        selection = None
+        if edit:
+            selection = arrays.selected_triangles(me)
+            if not selection.any():
+                raise ValueError("no faces selected: select the faces to fair (or use Object Mode for the whole mesh)")
+        kwargs = self.keywords()
+        keep = self.keep_connectivity and kwargs["subdivide"] == 0
+        if not keep:
+            if edit:
+                raise ValueError("subdivision and remeshing work on the whole mesh: use them in Object Mode")
+            self.check_shape_keys(me, "Subdivision or remeshing")
+        V, F, report = elastica.fair(arrays.V, arrays.F, selection, remesh=not keep,
+                                     progress=self.progress(context), **kwargs)
+        if keep:
+            ma.write_positions(me, V)
+        else:
+            ma.replace_geometry(me, V, F)
+        if self.color_by_mean_curvature:
+            measure_curvature(me, V, F)
+        moved = len(V) if not keep else int((V != arrays.V).any(axis=1).sum())
+        return (f"Elastica: {moved} of {len(V)} vertices moved; E {report['energy_initial']:.6g} -> "
+                f"{report['energy_final']:.6g} in {report['steps']} steps ({report['stop']}), "
+                f"{report['seconds']:.2f} s")
+
+
+class MESH_OT_elastica_fill_holes_base(ElasticaOperator):
+    bl_idname = "mesh.elastica_fill_holes"
+    bl_label = "Elastica Fill Holes"
+    bl_description = ("Fill holes with patches faired by the discrete elastica flow; the new faces come "
+                      "selected. Works on the mesh in object space")
+    filter_name = "fill_holes"
+
+    def run(self, context, me, edit):
+        arrays = ma.MeshArrays(me)
+        select_new = self.select_new_faces
+        V, F, new_faces, report = elastica.fill_holes(arrays.V, arrays.F, progress=self.progress(context),
+                                                      **self.keywords())
+        added = int(new_faces.sum())
+        if added:
+            self.check_shape_keys(me, "Filling holes")
+            polygons = ma.append_triangles(me, V, F[len(arrays.F):])
+            if select_new:
+                ma.select_only_polygons(me, polygons)
+        open_holes = report["skipped"]
+        return (f"Elastica: filled {report['filled']} of {len(report['holes'])} holes with {added} faces"
+                + (f" ({open_holes} left open)" if open_holes else "") + f", {report['seconds']:.2f} s")
+
+
+class MESH_OT_elastica_curvature_base(ElasticaOperator):
+    bl_idname = "mesh.elastica_curvature"
+    bl_label = "Elastica Curvature"
+    bl_description = ("Mean curvature H (+1/r on a sphere) and Gaussian curvature K into the point attributes "
+                      "mean_curvature and gaussian_curvature, and the colour attribute mean_curvature_color "
+                      "(red low H, blue high). In object space: H scales with 1/(object scale)")
+    filter_name = "curvature"
+
+    def run(self, context, me, edit):
+        arrays = ma.MeshArrays(me)
+        c = measure_curvature(me, arrays.V, arrays.F, **self.keywords())
+        return f"Elastica: H in [{c['H'].min():.6g}, {c['H'].max():.6g}], total curvature energy E = {c['energy']:.6g}"
+
+
+def _operator_class(base):
+    """The registered class: base with the redo panel's properties from elastica.filters()."""
+    params = _properties(base.filter_name)
+    annotations = {name: prop for name, (_, prop) in params.items()}
+    if "keep_connectivity" in base.extra:
+        annotations["keep_connectivity"] = BoolProperty(
+            name="Keep connectivity", default=True,
+            description="Move vertices only: the polygons, UVs, attributes and shape keys stay. Off: the "
+                        "semi-implicit scheme may remesh (the mesh is then rebuilt as triangles, attributes reset)")
+    return type(base.__name__[: -len("_base")], (base, bpy.types.Operator),
+                {"__annotations__": annotations, "params": params})
+
+
+classes = [_operator_class(b) for b in (MESH_OT_elastica_fair_base, MESH_OT_elastica_fill_holes_base,
+                                         MESH_OT_elastica_curvature_base)]
+
+
+def menu(self, context):
+    self.layout.separator()
+    for cls in classes:
+        self.layout.operator(cls.bl_idname, text=cls.bl_label)
+
+
+def register():
+    for cls in classes:
+        bpy.utils.register_class(cls)
+    bpy.types.VIEW3D_MT_edit_mesh_clean.append(menu)
+    bpy.types.VIEW3D_MT_object_cleanup.append(menu)
+
+
+def unregister():
+    bpy.types.VIEW3D_MT_object_cleanup.remove(menu)
+    bpy.types.VIEW3D_MT_edit_mesh_clean.remove(menu)
+    for cls in reversed(classes):
+        bpy.utils.unregister_class(cls)
