@@ -56,11 +56,11 @@ cage_args=(frame --segments 2,1 --window 4 --level 1)
 # shrinks the tubes until they collapse (the divergence guard stops it; the script measures when),
 # so it gets a step budget that stops it while there is still a shape to look at.
 declare -A stage_opts=(
-  [elastica]="--scheme semi-implicit --remesh --max-seconds $seconds"
-  [lmc]="--max-steps $lmc_steps"
-  [bilaplacian]="--max-steps 1500"
+  [elastica]="--max-seconds $seconds"
+  [lmc]="--scheme explicit --max-steps $lmc_steps"
+  [bilaplacian]="--scheme explicit --max-steps 1500"
 )
-declare -A scheme_name=([elastica]="semi-implicit, edge flips" [lmc]="explicit (paper)" [bilaplacian]="explicit (paper)")
+declare -A scheme_name=([elastica]="semi-implicit, remeshing (default)" [lmc]="explicit (paper)" [bilaplacian]="explicit (paper)")
 flows=(bilaplacian lmc elastica)
 early_steps=12
 for flow in "${flows[@]}"; do
@@ -136,6 +136,8 @@ ela_stop0=$(jq -r .stop "$work/elastica_0.json")
 ela_stop1=$(jq -r .stop "$work/elastica_1.json")
 ela_seconds=$(jq -r -s '(.[0].seconds + .[1].seconds) * 10 | round / 10' "$work/elastica_0.json" "$work/elastica_1.json")
 cage_vertices=$(jq -r '.input.vertices' "$work/elastica_0.json")
+# The page's second section (bench/cage_figures.sh) is kept as it is.
+cage_section=$(sed -n '/<!-- cage-figures:begin -->/,$p' "$docs/figures.md" 2>/dev/null || true)
 {
   cat <<EOF
 # The paper's Figs. 5–7 from real runs
@@ -211,5 +213,6 @@ elastica \`${stage_opts[elastica]}\`. "steps" counts attempts for the semi-impli
 or rejected); "stop" is the report's reason (\`converged\`: the energy plateau; \`max_seconds\`,
 \`max_steps\`: the budget).
 EOF
+  [[ -z "$cage_section" ]] || printf '\n%s\n' "$cage_section"
 } >"$docs/figures.md"
 log "wrote $docs/figures/ and $docs/figures.md (work files in $work)"
