@@ -10,7 +10,10 @@
 //       on a torus R/r = 3 (→ Clifford torus) and on the bunny-flank restoration;
 //   flow_bench factorization [--levels 4,5,6,7]
 //       the semi-implicit system's numeric factorisation on icospheres, Eigen SimplicialLDLT
-//       against CHOLMOD supernodal (pattern analysed once, as in the flow).
+//       against CHOLMOD supernodal (pattern analysed once, as in the flow);
+//   flow_bench resolution [--tori 48,16,96,32,192,64] [--explicit-seconds S]
+//       the default pipeline (semi-implicit with remeshing) against the explicit scheme on tori
+//       R/r = 3 at several resolutions: steps, seconds, R/r, E.
 #include <elastica/fairing.h>
 #include <elastica/hole_filling.h>
 #include <elastica/io/mesh_reader.h>
@@ -256,9 +259,11 @@ int convergence(const std::string& bunny, double explicitSeconds, const std::vec
   {
     const TriMesh torus = shapes::torus(3, 1, static_cast<int>(torusSegments.at(0)), static_cast<int>(torusSegments.at(1)));
     FlowOptions ex, si;
+    ex.scheme = Scheme::Explicit;
     ex.energyTolerance = 0;  // run to the time limit: the explicit plateau test stops early on a slow mode
     ex.maxSeconds = explicitSeconds;
     si.scheme = Scheme::SemiImplicit;
+    si.remesh = false;  // the two integrators on the same mesh (section 5 has the default pipeline)
     TriMesh a = torus, b = torus;
     const FlowReport re = fair(a, ex);
     const FlowReport rs = fair(b, si);
@@ -358,6 +363,49 @@ const char* option(int argc, char** argv, const char* name, const char* fallback
 
 }  // namespace
 
+// ---------------------------------------------------------------- resolution
+// The default pipeline (semi-implicit with remeshing) against the paper's explicit scheme on tori
+// R/r = 3 at several resolutions: steps to the plateau, wall time, R/r (least-squares fit of a
+// torus of revolution about z) and E. The explicit runs stop at the plateau or `explicitSeconds`.
+double fittedAspectRatio(const TriMesh& m) {
+  double R = 0, r = 0;
+  for (const Vec3& p : m.positions) R += std::hypot(p.x(), p.y()) / m.vertexCount();
+  for (const Vec3& p : m.positions) r += std::hypot(std::hypot(p.x(), p.y()) - R, p.z()) / m.vertexCount();
+  for (int it = 0; it < 50; ++it) {  // Gauss–Newton on Σ (dist to the tube circle − r)²
+    double a = 0, b = 0, c = 0, u = 0, w = 0;
+    for (const Vec3& p : m.positions) {
+      const double rho = std::hypot(p.x(), p.y()), d = std::hypot(rho - R, p.z());
+      const double jr = -(rho - R) / d, res = d - r;
+      a += jr * jr, b += -jr, c += 1, u += jr * res, w += -res;
+    }
+    const double det = a * c - b * b;
+    R += (-u * c + b * w) / det;
+    r += (-a * w + b * u) / det;
+  }
+  return R / r;
+}
+
+int resolution(const std::vector<long>& segments, double explicitSeconds) {
+  std::printf("| torus | vertices | scheme | steps | stop | seconds | R/r (√2 = 1.414) | E (8π² = %.2f) |\n", 8 * M_PI * M_PI);
+  std::printf("|---|---:|---|---:|---|---:|---:|---:|\n");
+  for (std::size_t k = 0; k + 1 < segments.size(); k += 2) {
+    const TriMesh torus = shapes::torus(3, 1, static_cast<int>(segments[k]), static_cast<int>(segments[k + 1]));
+    for (const Scheme scheme : {Scheme::SemiImplicit, Scheme::Explicit}) {
+      FlowOptions opt;
+      opt.scheme = scheme;
+      if (scheme == Scheme::Explicit) opt.maxSeconds = explicitSeconds;
+      TriMesh m = torus;
+      const FlowReport r = fair(m, opt);
+      std::printf("| %ld×%ld | %d | %s | %lld | %s | %.1f | %.3f | %.2f |\n", segments[k], segments[k + 1],
+                  torus.vertexCount(), scheme == Scheme::Explicit ? "explicit (paper)" : "semi-implicit, remeshing (default)",
+                  r.steps, r.stop == StopReason::Converged ? "converged" : r.stop == StopReason::MaxSeconds ? "time limit" : "other",
+                  r.seconds, fittedAspectRatio(m), r.energyFinal);
+      std::fflush(stdout);
+    }
+  }
+  return 0;
+}
+
 int main(int argc, char** argv) {
   const std::string what = argc > 1 ? argv[1] : "";
   try {
@@ -368,10 +416,14 @@ int main(int argc, char** argv) {
       return convergence(option(argc, argv, "--bunny", ""), std::atof(option(argc, argv, "--explicit-seconds", "120")),
                          parseList(option(argc, argv, "--torus", "48,16")));
     if (what == "factorization") return factorization(parseList(option(argc, argv, "--levels", "4,5,6,7")));
+    if (what == "resolution")
+      return resolution(parseList(option(argc, argv, "--tori", "48,16,96,32,192,64")),
+                        std::atof(option(argc, argv, "--explicit-seconds", "120")));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "flow_bench %s: %s\n", what.c_str(), e.what());
     return 1;
   }
-  std::fprintf(stderr, "usage: %s throughput|convergence|factorization [options] (see the source's header)\n", argv[0]);
+  std::fprintf(stderr, "usage: %s throughput|convergence|factorization|resolution [options] (see the source's header)\n",
+               argv[0]);
   return 2;
 }
