@@ -22,19 +22,23 @@ struct RadiusStats {
   double spread() const { return (max - min) / mean; }  ///< 0 for a round sphere
 };
 
-inline RadiusStats radii(const TriMesh& m) {
-  Vec3 c = Vec3::Zero();
-  for (const Vec3& p : m.positions) c += p;
-  c /= m.vertexCount();
+/// Distances of the vertices from `centre`.
+inline RadiusStats radiiAbout(const TriMesh& m, const Vec3& centre) {
   RadiusStats s;
   for (const Vec3& p : m.positions) {
-    const double r = (p - c).norm();
+    const double r = (p - centre).norm();
     s.mean += r;
     s.min = std::min(s.min, r);
     s.max = std::max(s.max, r);
   }
   s.mean /= m.vertexCount();
   return s;
+}
+
+inline RadiusStats radii(const TriMesh& m) {
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& p : m.positions) c += p;
+  return radiiAbout(m, c / m.vertexCount());
 }
 
 /// The least-squares sphere through the vertices (algebraic fit: |p|² = 2 c·p + d, r² = d + |c|²).
@@ -60,18 +64,7 @@ inline Sphere fitSphere(const TriMesh& m) {
 
 /// Distances of the vertices from the centre of their least-squares sphere: roundness that does
 /// not depend on how evenly the vertices are spread over the surface.
-inline RadiusStats fittedRadii(const TriMesh& m) {
-  const Vec3 c = fitSphere(m).centre;
-  RadiusStats s;
-  for (const Vec3& p : m.positions) {
-    const double r = (p - c).norm();
-    s.mean += r;
-    s.min = std::min(s.min, r);
-    s.max = std::max(s.max, r);
-  }
-  s.mean /= m.vertexCount();
-  return s;
-}
+inline RadiusStats fittedRadii(const TriMesh& m) { return radiiAbout(m, fitSphere(m).centre); }
 
 /// `m` with each vertex moved radially by a uniform factor in [1 − a, 1 + a].
 inline TriMesh radialNoise(TriMesh m, double a, unsigned seed) {

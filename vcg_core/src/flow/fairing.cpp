@@ -263,19 +263,11 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   if (quality) stageOpt.flipEdges = true;
   int level = 0;
   if (quality) {
-    const int floor = workingResolutionFloor(mesh);
-    while (level < opt.subdivisionLevels && movingVertexCount(mesh, selection, opt.boundary) < floor &&
-           (opt.targetEdgeLength <= 0 ||
-            meanEdgeLength(Topology(mesh.vertexCount(), mesh.faces), mesh.positions) > opt.targetEdgeLength)) {
-      subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
-      ++level;
-      ++report.preSubdivisions;
-    }
+    level = report.preSubdivisions = subdivideToWorkingResolution(mesh, selection, opt);
     report.inputSelfIntersects = selfIntersects(mesh);
   }
-  // A stage that leaves triangles this thin, or a neck this coarse (κℓ, mesh_quality_stage.h), is
-  // remeshed and flowed again, at most kMaxReflows times per level.
-  constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
+  // A stage that leaves the mesh unfit for the operators (needsRemeshing) is remeshed and flowed
+  // again, at most kMaxReflows times per level.
   constexpr int kMaxReflows = 2;
   bool first = true, adaptive = false;
   double lastTau = 0;  // the semi-implicit scheme's last accepted step, carried into the next stage
@@ -322,9 +314,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     // A limit reached just as the stage converged stops the run before it subdivides: a finer
     // mesh costs four times the memory and work, and its stage could not take a step.
     if (run.stopped || run.limitReached()) break;
-    if (quality && reflows < kMaxReflows &&
-        (smallestMovingAngle(mesh, selection, opt.boundary) < kRemeshAngleDegrees ||
-         largestMovingCurvatureTimesEdge(mesh, selection, opt.boundary) > kRemeshCurvatureTimesEdge)) {
+    if (quality && reflows < kMaxReflows && needsRemeshing(mesh, selection, opt.boundary)) {
       ++reflows;  // remesh and flow this level again
       adaptive = true;
       --level;

@@ -3,7 +3,9 @@
 #include "mesh/self_intersection.h"
 #include "restoration/patch_remeshing.h"
 
+#include <elastica/geometry.h>
 #include <elastica/mesh_curvature.h>
+#include <elastica/subdivision.h>
 #include <elastica/topology.h>
 
 #include <algorithm>
@@ -18,6 +20,8 @@ constexpr int kVerticesPerHandle = 100;
 // 8× below the region's mean edge length.
 constexpr double kTargetCurvatureTimesEdge = 0.4, kMaxRefinement = 8;
 constexpr int kMaxGrowth = 8;  // a remeshing leaves at most 8× the vertices (+1000)
+// A flowed mesh needs remeshing below this angle or above this κℓ (needsRemeshing).
+constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
 
 VertexRoles rolesOf(const Topology& topo, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
   return assignRoles(topo, &selection, mode);
@@ -47,6 +51,23 @@ int workingResolutionFloor(const TriMesh& mesh) {
   int genus = 0;
   if (topo.boundaryEdgeCount() == 0) genus = std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
   return kVerticesPerHandle * (genus + 1);
+}
+
+int subdivideToWorkingResolution(TriMesh& mesh, std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
+  const int floor = workingResolutionFloor(mesh);
+  int levels = 0;
+  while (levels < opt.subdivisionLevels && movingVertexCount(mesh, selection, opt.boundary) < floor &&
+         (opt.targetEdgeLength <= 0 ||
+          meanEdgeLength(Topology(mesh.vertexCount(), mesh.faces), mesh.positions) > opt.targetEdgeLength)) {
+    subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
+    ++levels;
+  }
+  return levels;
+}
+
+bool needsRemeshing(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
+  return smallestMovingAngle(mesh, selection, mode) < kRemeshAngleDegrees ||
+         largestMovingCurvatureTimesEdge(mesh, selection, mode) > kRemeshCurvatureTimesEdge;
 }
 
 int movingVertexCount(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {

@@ -23,6 +23,15 @@ namespace elastica {
 /// schedule subdivides before flowing, within the levels the caller asked for.
 int workingResolutionFloor(const TriMesh& mesh);
 
+/// Subdivides `mesh` (1-to-4, `selection` following) while fewer than workingResolutionFloor()
+/// vertices move, at most opt.subdivisionLevels times and not below opt.targetEdgeLength.
+/// Returns the number of subdivisions made: the levels the schedule has used up.
+int subdivideToWorkingResolution(TriMesh& mesh, std::vector<std::uint8_t>& selection, const FlowOptions& opt);
+
+/// A flowed mesh the discrete operators no longer serve: an angle below 20° among the moving
+/// faces, or a moving vertex with κℓ > 0.6 (largestMovingCurvatureTimesEdge).
+bool needsRemeshing(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode);
+
 /// How many vertices would move (FlowState's free vertices) for this selection and boundary mode.
 int movingVertexCount(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode);
 
