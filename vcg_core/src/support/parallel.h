@@ -51,6 +51,8 @@ Acc parallelReduce(int n, const Acc& init, const Body& body, const Join& join) {
     for (const Acc& p : partial) join(acc, p);
     return acc;
   }
+#else
+  (void)join;  // one accumulator: nothing to join without OpenMP
 #endif
   Acc acc = init;
   for (int i = 0; i < n; ++i) body(i, acc);
