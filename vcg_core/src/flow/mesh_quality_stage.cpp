@@ -20,6 +20,7 @@ constexpr int kVerticesPerHandle = 100;
 // 8× below the region's mean edge length.
 constexpr double kTargetCurvatureTimesEdge = 0.4, kMaxRefinement = 8;
 constexpr int kMaxGrowth = 8;  // a remeshing leaves at most 8× the vertices (+1000)
+constexpr double kMaxEdgeToTarget = 1000;
 // A flowed mesh needs remeshing below this angle or above this κℓ (needsRemeshing).
 constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
 
@@ -130,6 +131,15 @@ bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, Bou
   std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
   const double target = std::sqrt(4 * areas[areas.size() / 2] / std::sqrt(3.0));
   if (!(target > 0)) return false;
+  // Edges three orders of magnitude longer than the region's typical one are not a surface to
+  // remesh but a vertex thrown far away (fuzzing found one that made the remesher split for
+  // minutes): leave such a mesh to the flow, which refuses or repairs it step by step.
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    if (!region[f]) continue;
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k)
+      if (!((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm() <= kMaxEdgeToTarget * target)) return false;
+  }
 
   const bool crossedBefore = selfIntersects(mesh);
   TriMesh remeshed = mesh;
