@@ -4,6 +4,7 @@
 // Clean::SelfIntersections, a different implementation from the flow's guard), smallest angle.
 #include <elastica/io/mesh_reader.h>
 #include <elastica/mesh_curvature.h>
+#include <elastica/mesh_quality.h>
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
 
@@ -38,13 +39,7 @@ int main(int argc, char** argv) {
       std::vector<VcgFace*> hits;
       vcg::tri::Clean<VcgMesh>::SelfIntersections(vm, hits);
       const std::set<VcgFace*> crossing(hits.begin(), hits.end());
-      double minAngle = 180;
-      for (const Face& f : m.faces)
-        for (int k = 0; k < 3; ++k) {
-          const Vec3 a = m.positions[f[(k + 1) % 3]] - m.positions[f[k]];
-          const Vec3 b = m.positions[f[(k + 2) % 3]] - m.positions[f[k]];
-          minAngle = std::min(minAngle, std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI);
-        }
+      const double minAngle = smallestAngleDegrees(m);
       nlohmann::json j;
       j["file"] = argv[i];
       j["vertices"] = m.vertexCount();

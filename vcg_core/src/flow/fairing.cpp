@@ -15,6 +15,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 
 namespace elastica {
 namespace {
@@ -202,8 +203,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   // off so far (drift passes and edge flips excluded: they redistribute vertices, and a stop
   // rule that counted them would wait on mesh changes rather than on the shape).
   double lowered = 0;
-  std::deque<double> window{lowered};
-  std::deque<double> windowTime{run.time};
+  std::deque<std::pair<double, double>> window{{lowered, run.time}};  // (lowered so far, flow time)
   while (!run.limitReached()) {
     ++report.steps;  // attempts count against maxSteps
     if (!integrator.tryStep(state, tau)) {
@@ -230,12 +230,10 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
     if (run.record(state, stage.level, energy)) return;
     if (shapeSettled(state, integrator, accepted, run.opt.shapeTolerance)) return;
     lowered += integrator.lastEnergyDecrease();
-    window.push_back(lowered);
-    windowTime.push_back(run.time);
+    window.emplace_back(lowered, run.time);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
-    const double decrease = lowered - window.front(), timeBefore = windowTime.front();
+    const double decrease = lowered - window.front().first, timeBefore = window.front().second;
     window.pop_front();
-    windowTime.pop_front();
     if (decrease <= plateauTolerance * std::max(std::abs(energy), 1.0)) return;
     if (std::abs(energyRate(energy + decrease, energy, run.time - timeBefore, state.activeArea())) < rateTolerance) return;
   }

@@ -5,6 +5,7 @@
 
 #include <elastica/geometry.h>
 #include <elastica/mesh_curvature.h>
+#include <elastica/mesh_quality.h>
 #include <elastica/subdivision.h>
 #include <elastica/topology.h>
 
@@ -24,10 +25,6 @@ constexpr double kMaxEdgeToTarget = 1000;
 // A flowed mesh needs remeshing below this angle or above this κℓ (needsRemeshing).
 constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
 
-VertexRoles rolesOf(const Topology& topo, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
-  return assignRoles(topo, &selection, mode);
-}
-
 // Faces whose three vertices are all free: the region a remeshing may rewrite.
 std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& roles) {
   std::vector<std::uint8_t> region(mesh.faces.size(), 0);
@@ -36,11 +33,6 @@ std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& ro
     region[f] = roles.free[t[0]] && roles.free[t[1]] && roles.free[t[2]];
   }
   return region;
-}
-
-double cornerAngle(const Vec3& at, const Vec3& b, const Vec3& c) {
-  const Vec3 u = b - at, v = c - at;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
 }
 
 }  // namespace
@@ -73,27 +65,18 @@ bool needsRemeshing(const TriMesh& mesh, const std::vector<std::uint8_t>& select
 
 int movingVertexCount(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
-  return rolesOf(topo, selection, mode).freeCount;
+  return assignRoles(topo, &selection, mode).freeCount;
 }
 
 double smallestMovingAngle(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
-  const std::vector<std::uint8_t> region = movingFaces(mesh, rolesOf(topo, selection, mode));
-  double smallest = M_PI;
-  for (int f = 0; f < mesh.faceCount(); ++f) {
-    if (!region[f]) continue;
-    const Face& t = mesh.faces[f];
-    for (int k = 0; k < 3; ++k)
-      smallest = std::min(smallest, cornerAngle(mesh.positions[t[k]], mesh.positions[t[(k + 1) % 3]],
-                                                mesh.positions[t[(k + 2) % 3]]));
-  }
-  return smallest * 180 / M_PI;
+  return smallestAngleDegrees(mesh, movingFaces(mesh, assignRoles(topo, &selection, mode)));
 }
 
 double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& selection,
                                        BoundaryMode mode) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
-  const VertexRoles roles = rolesOf(topo, selection, mode);
+  const VertexRoles roles = assignRoles(topo, &selection, mode);
   const std::vector<double> kappa = largestPrincipalCurvature(mesh);
   double largest = 0;
   for (int v = 0; v < topo.vertexCount(); ++v) {
@@ -117,7 +100,7 @@ std::vector<double> largestPrincipalCurvature(const TriMesh& mesh) {
 bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, BoundaryMode mode,
                         bool curvatureAdaptive) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
-  const VertexRoles roles = rolesOf(topo, selection, mode);
+  const VertexRoles roles = assignRoles(topo, &selection, mode);
   std::vector<std::uint8_t> region = movingFaces(mesh, roles);
   std::vector<double> areas;
   for (int f = 0; f < mesh.faceCount(); ++f) {

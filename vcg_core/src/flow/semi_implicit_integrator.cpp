@@ -14,7 +14,8 @@
 namespace elastica {
 namespace {
 
-// Acceptance: a vertex may move at most this fraction of its mean edge length...
+// Acceptance: a vertex may move at most this many of its mean edge lengths (0.5 made the steps a
+// torus needs grow with its resolution; folds, energy and crossings still judge every step)...
 constexpr double kMaxJump = 2.0;
 // ...and the energy may not rise by more than this (relative): stricter stalls at the noise floor.
 constexpr double kEnergySlack = 1e-4;
