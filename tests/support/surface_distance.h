@@ -13,7 +13,7 @@ struct DistanceStats {
 };
 
 /// Distance from points sampled on the faces of `a` (`perEdge`² samples per face, barycentric grid)
-/// to the nearest face of `b`, brute force (fine for patches of a few thousand faces).
+/// to the nearest face of `b` (exact nearest face; `b`'s faces binned in a uniform grid).
 DistanceStats sampledDistance(const TriMesh& a, const TriMesh& b, int perEdge = 6);
 
 /// The faces of `m` flagged in `keep`, with their vertices, as a standalone mesh.

@@ -74,6 +74,9 @@ struct HoleReport {
   long long steps = 0;
   StopReason stop = StopReason::Converged;
   double minAngleDegrees = 0;  ///< smallest angle in the patch's faces
+  /// The smallest angle the border allows a patch (its sharpest convex corner inside the hole);
+  /// the fill keeps every patch angle at or above min(25°, this) where it can.
+  double borderBoundDegrees = 180;
   double seconds = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "restoration/hole_boundary.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace elastica {
 
@@ -52,6 +53,28 @@ std::vector<HoleLoop> findHoleLoops(const Topology& topo) {
     loops.push_back(std::move(loop));
   }
   return loops;
+}
+
+namespace {
+double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+}  // namespace
+
+double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const Topology& topo, const HoleLoop& loop) {
+  const double pi = std::acos(-1.0);
+  double bound = pi;
+  const int n = loop.edgeCount();
+  for (int i = 0; i < n; ++i) {
+    const int v = loop.vertices[i], u = loop.vertices[(i + n - 1) % n], w = loop.vertices[(i + 1) % n];
+    double meshAngle = 0;  // what the mesh's own faces span at v
+    for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) {
+      const int c = topo.corner(k), f = c / 3, j = c % 3;
+      const Face& t = topo.faces()[f];
+      meshAngle += angleBetween(positions[t[(j + 1) % 3]] - positions[v], positions[t[(j + 2) % 3]] - positions[v]);
+    }
+    if (2 * pi - meshAngle >= pi) continue;  // a reflex corner of the hole: a patch fans it out
+    bound = std::min(bound, angleBetween(positions[u] - positions[v], positions[w] - positions[v]));
+  }
+  return bound * 180 / pi;
 }
 
 }  // namespace elastica

@@ -23,4 +23,10 @@ struct HoleLoop {
 /// All boundary loops of a mesh, each starting at its smallest boundary half-edge (deterministic).
 std::vector<HoleLoop> findHoleLoops(const Topology& topo);
 
+/// The smallest angle any patch of `loop` can have, in degrees, as far as its border decides: the
+/// smallest angle between two consecutive border edges at a corner that the hole's side sees as
+/// convex (the mesh's own faces there span more than 180°). A patch face holding that corner has
+/// at most that angle; a fan of several faces there only splits it. 180 when no corner is convex.
+double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const Topology& topo, const HoleLoop& loop);
+
 }  // namespace elastica

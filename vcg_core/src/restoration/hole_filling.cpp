@@ -299,6 +299,7 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
     const auto holeStart = std::chrono::steady_clock::now();
     HoleReport hole;
     hole.borderEdges = loop.edgeCount();
+    hole.borderBoundDegrees = borderCornerBoundDegrees(mesh.positions, topo, loop);
     auto skip = [&](std::string why) {
       hole.reason = std::move(why);
       hole.seconds = seconds(holeStart);
