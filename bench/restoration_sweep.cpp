@@ -10,6 +10,7 @@
 // border edges (as cut), new vertices, time (best of runs within a second, one run above it),
 // smallest patch angle and the bound the border itself sets (its smallest corner inside the hole),
 // RMS distances patch→truth and truth→patch in % of the bounding-box diagonal.
+#include "geodesic_cut.h"
 #include "surface_distance.h"
 #ifdef ELASTICA_HAVE_CGAL
 #include "cgal_fill.h"
@@ -29,95 +30,12 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
-#include <limits>
-#include <numeric>
-#include <queue>
-#include <map>
 #include <sstream>
 #include <string>
 
 using namespace elastica;
 
 namespace {
-
-struct Cut {
-  TriMesh holed, truth;
-  int borderEdges = 0;
-};
-
-// Faces ordered by their geodesic distance from the vertex nearest `center` (Dijkstra along edges;
-// a face is as far as its farthest vertex): cutting a prefix of this order cuts a geodesic disc,
-// one hole however the surface bends (a ball would also cut through a nearby ear or leg).
-std::vector<int> facesByDistance(const TriMesh& full, const Vec3& center) {
-  const int nv = full.vertexCount();
-  std::vector<std::vector<std::pair<int, double>>> edges(nv);
-  for (const Face& t : full.faces)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3];
-      const double l = (full.positions[a] - full.positions[b]).norm();
-      edges[a].emplace_back(b, l);
-      edges[b].emplace_back(a, l);
-    }
-  int seed = 0;
-  for (int v = 1; v < nv; ++v)
-    if ((full.positions[v] - center).squaredNorm() < (full.positions[seed] - center).squaredNorm()) seed = v;
-  std::vector<double> dist(nv, std::numeric_limits<double>::infinity());
-  std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> queue;
-  dist[seed] = 0;
-  queue.emplace(0.0, seed);
-  while (!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > dist[v]) continue;
-    for (const auto& [w, l] : edges[v])
-      if (d + l < dist[w]) queue.emplace(dist[w] = d + l, w);
-  }
-  std::vector<double> key(full.faces.size());
-  for (std::size_t f = 0; f < full.faces.size(); ++f)
-    key[f] = std::max({dist[full.faces[f][0]], dist[full.faces[f][1]], dist[full.faces[f][2]]});
-  std::vector<int> order(full.faces.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return key[a] < key[b]; });
-  return order;
-}
-
-// The first `count` faces of `order` are cut away.
-Cut cutFaces(const TriMesh& full, const std::vector<int>& order, int count) {
-  std::vector<std::uint8_t> removed(full.faces.size(), 0), kept(full.faces.size(), 1);
-  for (int i = 0; i < count; ++i) {
-    removed[order[i]] = 1;
-    kept[order[i]] = 0;
-  }
-  // Border edges of the cut: edges between a removed and a kept face.
-  std::map<std::pair<int, int>, int> edgeSide;  // +1 per kept face, +100 per removed face
-  for (std::size_t f = 0; f < full.faces.size(); ++f) {
-    const Face& t = full.faces[f];
-    for (int k = 0; k < 3; ++k) {
-      const int a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
-      edgeSide[{a, b}] += removed[f] ? 100 : 1;
-    }
-  }
-  Cut cut;
-  for (const auto& [edge, side] : edgeSide) cut.borderEdges += side == 101;
-  cut.holed = bench::facesOf(full, kept);
-  cut.truth = bench::facesOf(full, removed);
-  return cut;
-}
-
-// The geodesic disc whose border has about `edges` edges (bisection on the number of faces cut:
-// the border grows with it, not strictly).
-Cut cutWithBorder(const TriMesh& full, const std::vector<int>& order, int edges) {
-  int lo = 1, hi = full.faceCount() / 2;
-  Cut best;
-  best.borderEdges = -1;
-  while (lo <= hi && std::abs(best.borderEdges - edges) > edges / 50) {
-    const int mid = (lo + hi) / 2;
-    Cut c = cutFaces(full, order, mid);
-    (c.borderEdges < edges ? lo : hi) = c.borderEdges < edges ? mid + 1 : mid - 1;
-    if (best.borderEdges < 0 || std::abs(c.borderEdges - edges) < std::abs(best.borderEdges - edges)) best = std::move(c);
-  }
-  return best;
-}
 
 void writeMesh(const std::string& path, const TriMesh& m) {
   VcgMesh vm;
@@ -131,7 +49,7 @@ struct Score {
   double angle = 0, there = 0, back = 0;
 };
 
-Score score(const Cut& cut, const std::function<void(TriMesh&)>& fill, double diagonal, TriMesh& result) {
+Score score(const test::Cut& cut, const std::function<void(TriMesh&)>& fill, double diagonal, TriMesh& result) {
   Score s;
   double spent = 0;
   while (s.runs == 0 || (s.runs < 10 && spent + s.ms / 1e3 < 1.0)) {
@@ -193,9 +111,9 @@ int main(int argc, char** argv) {
   }
   const double diagonal = (hi - lo).norm();
 
-  const std::vector<int> order = facesByDistance(full, center);
+  const std::vector<int> order = test::facesByDistance(full, center);
   for (int edges : sizes) {
-    const Cut cut = cutWithBorder(full, order, edges);
+    const test::Cut cut = test::cutWithBorder(full, order, edges);
     TriMesh ours, theirs;
     HoleFillOptions opt;
     opt.maxHoleEdges = 1000000;

@@ -70,7 +70,13 @@ void runFill(FillArgs& a) {
     std::printf("hole %zu: %d border edges, filled with %s and %s", i + 1, h.borderEdges,
                 plural(h.newVertices, "vertex").c_str(), plural(h.newFaces, "face").c_str());
     if (h.steps > 0) std::printf(", energy %.6g -> %.6g in %lld steps (%s)", h.energyBefore, h.energyAfter, h.steps, app::nameOf(h.stop));
-    std::printf(", smallest angle %.1f deg, %.2f s\n", h.minAngleDegrees, h.seconds);
+    std::printf(", smallest angle %.1f deg", h.minAngleDegrees);
+    if (h.borderBoundDegrees < 25) std::printf(" (the border allows %.1f deg)", h.borderBoundDegrees);
+    std::printf(", %.2f s\n", h.seconds);
+    std::string stages;
+    for (const FillStageReport& s : h.stages)
+      if (s.stage != "triangulation") stages += (stages.empty() ? "" : ", ") + s.stage + (s.kept ? " kept" : " undone (" + s.why + ")");
+    if (!stages.empty()) std::printf("  stages: %s\n", stages.c_str());
     if (!h.reason.empty()) std::cerr << "warning: hole " << i + 1 << ": " << h.reason << "\n";
   }
   if (!report.welds.empty())

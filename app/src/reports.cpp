@@ -37,7 +37,13 @@ nlohmann::json toJson(const HoleReport& h) {
   j["steps"] = h.steps;
   j["stop"] = nameOf(h.stop);
   j["min_angle_degrees"] = h.minAngleDegrees;
+  j["border_bound_degrees"] = h.borderBoundDegrees;
   j["seconds"] = h.seconds;
+  for (const FillStageReport& s : h.stages) {
+    nlohmann::json stage{{"stage", s.stage}, {"kept", s.kept}, {"min_angle_degrees", s.minAngleDegrees}, {"energy", s.energy}, {"steps", s.steps}};
+    if (!s.why.empty()) stage["why"] = s.why;
+    j["stages"].push_back(stage);
+  }
   return j;
 }
 

@@ -58,9 +58,21 @@ struct HoleFillOptions {
     f.scheme = Scheme::SemiImplicit;
     f.flipEdges = true;
     f.shapeTolerance = 1e-3;
+    f.startAtShapeScale = true;
     f.remesh = false;  // the fill has its own refinement and remeshing stages, made for a patch
     return f;
   }
+};
+
+/// One stage of a hole's pipeline after its triangulation, measured on the same region as every
+/// other (the patch's faces and their vertices, the border's included, each with its whole fan).
+struct FillStageReport {
+  std::string stage;   ///< "triangulation", "refinement", "bi-Laplace", "flow", "remeshing and flow"
+  bool kept = false;   ///< false: the patch went back to what the last kept stage left
+  double minAngleDegrees = 0;  ///< what the stage left, kept or not
+  double energy = 0;           ///< total curvature energy of the region, kept or not
+  long long steps = 0;         ///< flow steps the stage took
+  std::string why;             ///< why it was not kept ("smallest angle lower", "energy higher", an error)
 };
 
 /// What happened to one hole.
@@ -69,8 +81,9 @@ struct HoleReport {
   bool filled = false;
   std::string reason;        ///< why it was skipped, or what went wrong with the flow; empty if all went well
   int newVertices = 0, newFaces = 0;
-  double energyBefore = 0;   ///< total curvature of the patch's active region when the flow starts
-  double energyAfter = 0;    ///< … and when it stops (equal to energyBefore without a flow)
+  /// Total curvature energy of the patch's region (FillStageReport) at the bi-Laplace start …
+  double energyBefore = 0;
+  double energyAfter = 0;    ///< … and at the end (never higher: a stage that raises it is undone)
   long long steps = 0;
   StopReason stop = StopReason::Converged;
   double minAngleDegrees = 0;  ///< smallest angle in the patch's faces
@@ -78,6 +91,9 @@ struct HoleReport {
   /// the fill keeps every patch angle at or above min(25°, this) where it can.
   double borderBoundDegrees = 180;
   double seconds = 0;
+  /// The stages run, in order, each kept only if it lowered neither the smallest angle (below
+  /// min(25°, the last kept stage's)) nor raised the energy.
+  std::vector<FillStageReport> stages;
 };
 
 struct HoleFillReport {

@@ -198,6 +198,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   // A later stage (after a subdivision or a remeshing) starts near its predecessor's last step:
   // its shape is nearly settled already, and growing τ again from 0.05 ℓ⁴ would cost ~15 steps.
   double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
+  if (run.opt.startAtShapeScale) tau = std::max(tau, area0 * area0 / (10 * kShapeScaleFactor));
   double ceiling = std::numeric_limits<double>::infinity();  // the last step size that failed, raised slowly
   // The window holds, per accepted step, the flow time and the energy the normal steps have taken
   // off so far (drift passes and edge flips excluded: they redistribute vertices, and a stop

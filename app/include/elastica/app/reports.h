@@ -16,7 +16,8 @@ namespace elastica::app {
 nlohmann::json toJson(const FlowReport& r);
 
 /// One hole: border_edges, filled, reason, and if filled new_vertices, new_faces, energy_before,
-/// energy_after, steps, stop, min_angle_degrees, seconds.
+/// energy_after, steps, stop, min_angle_degrees, border_bound_degrees, seconds and stages[]
+/// ({stage, kept, min_angle_degrees, energy, steps, why}).
 nlohmann::json toJson(const HoleReport& h);
 
 /// A fairing run: the flow report, "flow", "input" {vertices, faces} and, for a finished run
