@@ -95,9 +95,9 @@ FilterSpec fairing(const MeshFacts& mesh) {
       maxStepsParam(),
       maxSecondsParam(),
       intParam("subdivisionLevels", 0, "Subdivision levels",
-               "Coarse to fine: how many times the mesh is split 1-to-4 at edge midpoints, each time when the "
-               "flow is near steady state (each level has four times the faces). The whole mesh is split, also "
-               "with 'Affect only selected faces' (the selection is split with it and only it moves).",
+               "Coarse to fine: how many times the faces are split 1-to-4 at edge midpoints, each time the flow "
+               "is near steady state. With 'Affect only selected faces' only the selection is split (and the "
+               "faces along it, to stay conforming).",
                0, 8),
       floatParam("energyTolerance", float(FlowOptions{}.energyTolerance), "Energy tolerance",
                  "Stop when the relative change of the total curvature energy per unit of normalised time falls "
