@@ -102,7 +102,7 @@ FilterSpec fairing(const MeshFacts& mesh) {
       enumParam("boundary", indexOf(FlowOptions{}.boundary), labels<BoundaryMode>(), "Boundary",
                 "Fixed: the boundary and the next ring stay put (G1). Slide: the boundary slides along itself."),
       boolParam("Selected", mesh.selectedFaces > 0, "Affect only selected faces",
-                "Only vertices inside the selection move; its two outer rings stay fixed."),
+                "Only vertices whose faces are all selected move; two rings around them stay fixed."),
       boolParam("colorByMeanCurvature", false, "Colour by mean curvature",
                 "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high)."),
   };
