@@ -70,7 +70,8 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
 
 void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt) {
   cmd.add_option("--subdivide", opt.subdivisionLevels,
-                 "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state")
+                 "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state (with a selection, of the "
+                 "selected faces only)")
       ->check(parameterRange(app::FilterId::Fairing, "subdivisionLevels"));
   cmd.add_option("--target-edge", opt.targetEdgeLength, "stop subdividing once the mean edge length is at most this")
       ->check(CLI::NonNegativeNumber);

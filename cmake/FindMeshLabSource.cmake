@@ -1,7 +1,7 @@
 # Locates the source tree of Debian's `meshlab` source package, fetched by scripts/setup.sh.
 #
 # Inputs (cache variables, all optional):
-#   MESHLAB_SOURCE_DIR  a MeshLab source tree (holds vcglib/ and src/common/)
+#   MESHLAB_SOURCE_DIR  a MeshLab source tree (holds vcglib/ or src/vcglib/, and src/common/)
 #   VCGLIB_DIR          a vcglib checkout, if it is not inside MESHLAB_SOURCE_DIR
 # Default search: $ELASTICA_CACHE_DIR, then ${XDG_CACHE_HOME:-$HOME/.cache}/elastica, for
 # meshlab-src-<version of the installed meshlab package>, else the newest meshlab-src-*.
@@ -33,7 +33,11 @@ if(NOT MESHLAB_SOURCE_DIR AND NOT VCGLIB_DIR)
 endif()
 
 if(NOT VCGLIB_DIR AND MESHLAB_SOURCE_DIR)
-  set(VCGLIB_DIR "${MESHLAB_SOURCE_DIR}/vcglib" CACHE PATH "vcglib source tree")
+  if(EXISTS "${MESHLAB_SOURCE_DIR}/vcglib")
+    set(VCGLIB_DIR "${MESHLAB_SOURCE_DIR}/vcglib" CACHE PATH "vcglib source tree")
+  else()  # MeshLab 2021 and later keep it under src/
+    set(VCGLIB_DIR "${MESHLAB_SOURCE_DIR}/src/vcglib" CACHE PATH "vcglib source tree")
+  endif()
 endif()
 
 include(FindPackageHandleStandardArgs)

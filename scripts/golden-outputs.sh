@@ -62,10 +62,8 @@ elephant=$(ls -d "${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica
 run curvature            curvature "$root/data/bunny.ply" -o curvature.ply
 run curvature_paper      curvature "$root/data/bunny.ply" -o curvature_paper.ply --area barycentric --lambda-fix --ascii
 run subdivide            subdivide "$root/data/bunny.ply" -o subdivide.ply --levels 1
-# examples/fairing.mlx is left out: the explicit flow on the whole bunny runs for minutes.
 for s in "$root"/meshlab_plugin/examples/*.mlx "$root"/tests/plugin/scripts/fairing_explicit_*.mlx; do
   name=run_$(basename "$s" .mlx)
-  [[ $name == run_fairing ]] && continue
   input="$root/data/bunny.ply"
   [[ $name == run_fill_holes ]] && input="$root/data/bunny_flank_hole.ply"
   run "$name" run -i "$input" -o "$name.ply" -s "$s"

@@ -1,21 +1,24 @@
 #!/usr/bin/env bash
 # Elastica set-up from Debian packages only.
 #
-#   scripts/setup.sh            install missing binary packages, fetch MeshLab's source tree
+#   scripts/setup.sh            install missing binary packages, fetch MeshLab's source trees
 #   scripts/setup.sh --check    only report what is missing (exit 1 if anything is)
 #
 # 1. Binary packages (apt-get) that the build, the tests and the MeshLab plugin need.
 # 2. Two real sample meshes from Debian's libcgal-demo package (downloaded, not installed).
 # 3. Debian's `meshlab` *source* package, the same version as the installed `meshlab` binary (so the
 #    plugin ABI matches), unpacked into a cache: it holds vcglib and MeshLab's plugin headers
-#    (src/common). The machines have no deb-src lines, so we derive a private apt configuration at
-#    run time from the system's own Debian sources (same mirrors, type swapped to deb-src) and use
-#    a private list directory: the system's apt configuration is never touched, and no mirror host
-#    is written in this repository.
+#    (src/common). And Debian 13 (trixie)'s `meshlab` source package (MeshLab 2022.02), for the
+#    compile check of the plugin's 2022 API. The machines have no deb-src lines, so we derive a
+#    private apt configuration at run time from the system's own Debian sources (same mirrors, type
+#    swapped to deb-src; for the second, the suite swapped to trixie) and use a private list
+#    directory: the system's apt configuration is never touched, and no mirror host is written in
+#    this repository.
 #
 # Idempotent: a second run finds everything in place and returns in well under a second.
 # Cache location: $ELASTICA_CACHE_DIR, else ${XDG_CACHE_HOME:-$HOME/.cache}/elastica. CMake looks
-# in the same place (cmake/FindMeshLabSource.cmake), or takes -DMESHLAB_SOURCE_DIR=/-DVCGLIB_DIR=.
+# in the same place (cmake/FindMeshLabSource.cmake), or takes -DMESHLAB_SOURCE_DIR=/-DVCGLIB_DIR=
+# (and -DMESHLAB_2022_SOURCE_DIR= for the 2022.02 tree).
 set -euo pipefail
 
 PACKAGES=(
@@ -45,7 +48,7 @@ die() { printf 'setup: error: %s\n' "$*" >&2; exit 1; }
 check_only=0
 case "${1:-}" in
   --check) check_only=1 ;;
-  -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   "") ;;
   *) die "unknown option '$1' (try --help)" ;;
 esac
@@ -121,79 +124,138 @@ fetch_cgal_meshes() {
 mkdir -p "$cache"
 fetch_cgal_meshes
 
-# ---------------------------------------------------------------- 3. MeshLab source tree
+# ---------------------------------------------------------------- 3. MeshLab source trees
+# Debian source packages are fetched with a private apt state (source list, lists and archives in
+# a work directory under the cache, removed afterwards): the system's apt configuration is never
+# touched. The machines have no deb-src lines, so the source list is derived at run time from the
+# system's own Debian sources (same mirrors and keys, type swapped to deb-src); no mirror host is
+# written in this repository.
+codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
+[[ -n "$codename" ]] || die "cannot tell the Debian release (no VERSION_CODENAME in /etc/os-release)"
+
+# deb_src_list FILE [SUITE]: writes deb-src entries for the system's Debian sources of this release
+# into FILE: its suites (codename, codename-updates, codename-security), or, with SUITE, only the
+# release's main suite renamed SUITE (another Debian release on the same mirror). Entries of other
+# suites (third-party repositories without source packages) are left out, so `apt-get update`
+# does not fail on them.
+deb_src_list() {
+  local out=$1 to=${2:-} f
+  : >"$out"
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [[ -f "$f" ]] || continue
+    # deb822 stanzas are separated by blank lines; keep the Debian ones, with Types: deb-src.
+    awk -v cn="$codename" -v to="$to" '
+      function flush() {
+        if (uris != "" && keep) {
+          n = split(suites, s, " "); nu = split(uris, u, " ")
+          for (i = 1; i <= n; i++) if (s[i] == cn || (to == "" && index(s[i], cn "-") == 1))
+            for (j = 1; j <= nu; j++)
+              print "deb-src" (signed != "" ? " [signed-by=" signed "]" : "") " " u[j] " " (to != "" ? to : s[i]) " " comps
+        }
+        uris = ""; suites = ""; comps = ""; signed = ""; keep = 0
+      }
+      /^[ \t]*$/ { flush(); next }
+      /^#/ { next }
+      /^Types:/ { keep = ($0 ~ /(^|[ \t])deb([ \t]|$)/) }
+      /^URIs:/ { sub(/^URIs:[ \t]*/, ""); uris = $0 }
+      /^Suites:/ { sub(/^Suites:[ \t]*/, ""); suites = $0 }
+      /^Components:/ { sub(/^Components:[ \t]*/, ""); comps = $0 }
+      /^Signed-By:/ { sub(/^Signed-By:[ \t]*/, ""); signed = $0 }
+      END { flush() }' "$f" >>"$out"
+  done
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+    [[ -f "$f" ]] || continue
+    # one-line format: deb [options] URI suite components...
+    awk -v cn="$codename" -v to="$to" '$1 == "deb" {
+        i = 2; opts = ""; if ($2 ~ /^\[/) { while ($i !~ /\]$/) { opts = opts $i " "; i++ } opts = opts $i " "; i++ }
+        if ($(i+1) == cn || (to == "" && index($(i+1), cn "-") == 1)) { $1 = "deb-src"; if (to != "") $(i+1) = to; print }
+      }' "$f" >>"$out"
+  done
+  [[ -s "$out" ]] || die "no Debian '$codename' entries found in /etc/apt/sources.list{,.d} to derive deb-src from"
+}
+
+# apt_state WORK [SUITE]: a private apt state in WORK for deb_src_list's entries, updated; sets apt_opts.
+apt_state() {
+  local work=$1
+  rm -rf "$work"
+  mkdir -p "$work/lists/partial" "$work/archives/partial"
+  deb_src_list "$work/sources.list" "${2:-}"
+  apt_opts=(
+    -o Dir::Etc::SourceList="$work/sources.list" -o Dir::Etc::SourceParts=/dev/null
+    -o Dir::State::Lists="$work/lists" -o Dir::Cache::Archives="$work/archives"
+    -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=
+    -o APT::Sandbox::User="$(id -un)" -o Debug::NoLocking=1
+  )
+  apt-get "${apt_opts[@]}" -qq update || die "apt-get update of the derived deb-src lists ($work/sources.list) failed"
+}
+
+# fetch_source PACKAGE VERSION TREE WORK: Debian's source package PACKAGE=VERSION unpacked into TREE
+# with apt_state's state in WORK: `apt-get source --download-only` and dpkg-source (Debian's
+# patches applied; apt has verified the files against the signed indices). A mirror that serves the
+# package only in part (this one answers 404 for trixie's meshlab .dsc and Debian patch tarball,
+# yet serves its upstream tarball) leaves the upstream tarball the signed Sources index lists:
+# fetched by apt-helper, which checks its SHA-256, and unpacked without Debian's patches.
+# TREE/.elastica-origin says which.
+fetch_source() {
+  local package=$1 version=$2 tree=$3 work=$4 dsc uri file size hash
+  rm -rf "$tree" "$work/download" && mkdir -p "$work/download"
+  if (cd "$work/download" && apt-get "${apt_opts[@]}" -qq source --download-only "$package=$version") 2>"$work/source.err"; then
+    dsc=$(ls "$work"/download/*.dsc 2>/dev/null | head -n1)
+    [[ -n "$dsc" ]] || die "no .dsc file was downloaded for $package=$version"
+    dpkg-source --no-check -x "$dsc" "$tree" >/dev/null || die "dpkg-source could not unpack $dsc"
+    echo "Debian source package $package $version, unpacked by dpkg-source (Debian's patches applied)" >"$tree/.elastica-origin"
+  else
+    log "apt-get source $package=$version failed ($(grep -m1 '^E:' "$work/source.err" || tail -n1 "$work/source.err")); taking its upstream tarball from the signed Sources index"
+    rm -rf "$work/download" && mkdir -p "$work/download"
+    read -r uri file size hash < <(cd "$work/download" && apt-get "${apt_opts[@]}" -qq --print-uris source "$package=$version" |
+                                   awk '$2 ~ /\.orig\.tar\./') || die "the Sources index lists no upstream tarball for $package=$version"
+    uri=${uri//\'/}
+    /usr/lib/apt/apt-helper "${apt_opts[@]}" download-file "$uri" "$work/download/$file" "$hash" >/dev/null 2>"$work/source.err" ||
+      die "could not download $file ($(tail -n1 "$work/source.err"))"
+    mkdir -p "$tree"
+    tar -xf "$work/download/$file" -C "$tree" --strip-components=1 || die "could not unpack $file"
+    echo "upstream tarball $file of Debian's $package $version ($size bytes, $hash as the signed Sources index lists; Debian's patches not applied: the mirror did not serve the .dsc)" >"$tree/.elastica-origin"
+  fi
+}
+
+# 3a. The installed MeshLab's source (2020.09 on Debian 12): vcglib and the plugin headers the
+# plugin is built and run-tested with.
 version=$(dpkg-query -W -f='${Version}' meshlab 2>/dev/null || true)
 [[ -n "$version" ]] || die "the meshlab package is not installed"
 tree="$cache/meshlab-src-$version"
-stamp="$tree/.elastica-complete"
-
-if [[ -f "$stamp" ]]; then
+if [[ -f "$tree/.elastica-complete" ]]; then
   log "MeshLab $version source tree ready: $tree"
-  exit 0
+else
+  ((check_only)) && { log "MeshLab source tree not fetched yet ($tree)"; exit 1; }
+  command -v dpkg-source >/dev/null || die "dpkg-source not found (package dpkg-dev)"
+  log "fetching Debian's meshlab $version source package (about 12 MB) with a private apt state"
+  apt_state "$cache/apt-work"
+  fetch_source meshlab "$version" "$tree" "$cache/apt-work"
+  [[ -f "$tree/vcglib/vcg/complex/complex.h" && -f "$tree/src/common/interfaces.h" ]] \
+    || die "unpacked tree $tree lacks vcglib/ or src/common/"
+  touch "$tree/.elastica-complete"
+  # dpkg-source leaves a copy of the upstream tarball beside the tree it unpacked.
+  rm -rf "$cache/apt-work" "$cache"/meshlab_*.orig.tar.*
+  log "MeshLab $version source tree ready: $tree"
 fi
-((check_only)) && { log "MeshLab source tree not fetched yet ($tree)"; exit 1; }
 
-command -v dpkg-source >/dev/null || die "dpkg-source not found (package dpkg-dev)"
-work="$cache/apt-work"
-rm -rf "$work" "$tree"
-mkdir -p "$work/lists/partial" "$work/archives/partial" "$work/download"
-
-# Derive deb-src entries from the system's Debian sources. Only entries whose suite is this
-# release's codename (or codename-updates/-security) are kept, so third-party repositories
-# without source packages do not make `apt-get update` fail.
-codename=$(. /etc/os-release && echo "${VERSION_CODENAME:-}")
-[[ -n "$codename" ]] || die "cannot tell the Debian release (no VERSION_CODENAME in /etc/os-release)"
-src_list="$work/sources.list"
-: >"$src_list"
-for f in /etc/apt/sources.list.d/*.sources; do
-  [[ -f "$f" ]] || continue
-  # deb822 stanzas are separated by blank lines; keep the Debian ones, with Types: deb-src.
-  awk -v cn="$codename" '
-    function flush() {
-      if (uris != "" && keep) {
-        n = split(suites, s, " "); nu = split(uris, u, " ")
-        for (i = 1; i <= n; i++) if (s[i] == cn || index(s[i], cn "-") == 1)
-          for (j = 1; j <= nu; j++)
-            print "deb-src" (signed != "" ? " [signed-by=" signed "]" : "") " " u[j] " " s[i] " " comps
-      }
-      uris = ""; suites = ""; comps = ""; signed = ""; keep = 0
-    }
-    /^[ \t]*$/ { flush(); next }
-    /^#/ { next }
-    /^Types:/ { keep = ($0 ~ /(^|[ \t])deb([ \t]|$)/) }
-    /^URIs:/ { sub(/^URIs:[ \t]*/, ""); uris = $0 }
-    /^Suites:/ { sub(/^Suites:[ \t]*/, ""); suites = $0 }
-    /^Components:/ { sub(/^Components:[ \t]*/, ""); comps = $0 }
-    /^Signed-By:/ { sub(/^Signed-By:[ \t]*/, ""); signed = $0 }
-    END { flush() }' "$f" >>"$src_list"
-done
-for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
-  [[ -f "$f" ]] || continue
-  # one-line format: deb [options] URI suite components...
-  awk -v cn="$codename" '$1 == "deb" {
-      i = 2; opts = ""; if ($2 ~ /^\[/) { while ($i !~ /\]$/) { opts = opts $i " "; i++ } opts = opts $i " "; i++ }
-      if ($(i+1) == cn || index($(i+1), cn "-") == 1) { $1 = "deb-src"; print }
-    }' "$f" >>"$src_list"
-done
-[[ -s "$src_list" ]] || die "no Debian '$codename' entries found in /etc/apt/sources.list{,.d} to derive deb-src from"
-
-apt_opts=(
-  -o Dir::Etc::SourceList="$src_list" -o Dir::Etc::SourceParts=/dev/null
-  -o Dir::State::Lists="$work/lists" -o Dir::Cache::Archives="$work/archives"
-  -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=
-  -o APT::Sandbox::User="$(id -un)" -o Debug::NoLocking=1
-)
-log "fetching Debian's meshlab $version source package (about 12 MB) with a private apt state"
-apt-get "${apt_opts[@]}" -qq update || die "apt-get update of the derived deb-src lists failed"
-(cd "$work/download" && apt-get "${apt_opts[@]}" -qq source --download-only "meshlab=$version") \
-  || die "could not download the meshlab=$version source package"
-dsc=$(ls "$work"/download/*.dsc 2>/dev/null | head -n1)
-[[ -n "$dsc" ]] || die "no .dsc file was downloaded"
-# dpkg-source applies Debian's patches; apt has already verified the files against signed indices.
-dpkg-source --no-check -x "$dsc" "$tree" >/dev/null || die "dpkg-source could not unpack $dsc"
-[[ -f "$tree/vcglib/vcg/complex/complex.h" && -f "$tree/src/common/interfaces.h" ]] \
-  || die "unpacked tree $tree lacks vcglib/ or src/common/"
-touch "$stamp"
-# dpkg-source leaves a copy of the upstream tarball beside the tree it unpacked.
-rm -rf "$work" "$cache"/meshlab_*.orig.tar.*
-log "MeshLab $version source tree ready: $tree"
+# 3b. MeshLab 2022.02, Debian 13 (trixie)'s: its source package from the trixie suite of the same
+# mirror, for the compile check of the plugin's 2022 API (ctest plugin_meshlab2022_compile). Debian
+# 12 cannot install that MeshLab, so it is not run. Cached: once unpacked, no network.
+trixie_tree=$(ls -d "$cache"/meshlab-trixie-src-2022.02*/.elastica-complete 2>/dev/null | tail -n1 || true)
+if [[ -n "$trixie_tree" ]]; then
+  log "MeshLab 2022.02 (Debian 13) source tree ready: ${trixie_tree%/.elastica-complete}"
+else
+  ((check_only)) && { log "MeshLab 2022.02 (Debian 13) source tree not fetched yet ($cache/meshlab-trixie-src-2022.02*)"; exit 1; }
+  log "fetching Debian 13 (trixie)'s meshlab 2022.02 source package (about 7 MB) with a private apt state"
+  apt_state "$cache/apt-work-trixie" trixie
+  trixie_version=$(apt-cache "${apt_opts[@]}" showsrc meshlab 2>/dev/null | awk '/^Version: 2022\.02/ {print $2}' | sort -V | tail -n1)
+  [[ -n "$trixie_version" ]] || die "Debian's trixie suite has no meshlab 2022.02 source package"
+  tree="$cache/meshlab-trixie-src-$trixie_version"
+  fetch_source meshlab "$trixie_version" "$tree" "$cache/apt-work-trixie"
+  [[ -f "$tree/src/vcglib/vcg/complex/complex.h" && -f "$tree/src/common/plugins/interfaces/filter_plugin.h" ]] \
+    || die "unpacked tree $tree lacks src/vcglib/ or src/common/plugins/interfaces/filter_plugin.h"
+  touch "$tree/.elastica-complete"
+  rm -rf "$cache/apt-work-trixie" "$cache"/meshlab_*.orig.tar.*
+  log "MeshLab $trixie_version (Debian 13) source tree ready: $tree ($(cat "$tree/.elastica-origin"))"
+fi

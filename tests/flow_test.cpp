@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -165,6 +166,46 @@ TEST(Flow, SubdivisionStageStartsFromTheCoarseResult) {
   EXPECT_EQ(r.stages[1].faces, 4 * r.stages[0].faces);
   EXPECT_EQ(r.stages[2].faces, 4 * r.stages[1].faces);
   EXPECT_EQ(m.faceCount(), r.stages[2].faces);
+}
+
+// With a region, only the region is refined (faces sharing an edge with it split to stay
+// conforming): the region's faces quadruple, the faces away from it keep their index and
+// vertices, and no vertex outside the region moves. (Semi-implicit without remeshing: it reaches
+// the first stage's plateau in a few dozen steps, and the counts stay exact.)
+TEST(Flow, SubdivisionOfARegionRefinesOnlyTheRegion) {
+  const TriMesh before = radialNoise(shapes::icosphere(1.0, 3), 0.03, 6);
+  std::vector<std::uint8_t> cap(before.faceCount(), 0);
+  for (int f = 0; f < before.faceCount(); ++f) {
+    double z = 0;
+    for (int v : before.faces[f]) z += before.positions[v].z() / 3;
+    cap[f] = z > 0.3;
+  }
+  TriMesh m = before;
+  FlowOptions opt;
+  opt.scheme = Scheme::SemiImplicit;
+  opt.remesh = false;
+  opt.subdivisionLevels = 1;
+  const FlowReport r = fair(m, FaceSet::fromFlags(cap), opt);
+  ASSERT_EQ(r.stages.size(), 2u);
+  const long capFaces = std::count(cap.begin(), cap.end(), 1);
+  EXPECT_EQ(long(r.regionFaces.size()), 4 * capFaces);
+  EXPECT_LT(r.stages[1].faces, before.faceCount() + 4 * capFaces);  // not the whole mesh 1-to-4
+  EXPECT_EQ(r.stages[1].faces, m.faceCount());
+  std::vector<std::uint8_t> touchesCap(before.vertexCount(), 0);
+  for (int f = 0; f < before.faceCount(); ++f)
+    if (cap[f])
+      for (int v : before.faces[f]) touchesCap[v] = 1;
+  int kept = 0;
+  for (int f = 0; f < before.faceCount(); ++f) {
+    const Face& t = before.faces[f];
+    if (cap[f] || touchesCap[t[0]] + touchesCap[t[1]] + touchesCap[t[2]] >= 2) continue;  // may share an edge with the cap
+    EXPECT_EQ(m.faces[f], t) << "face " << f;
+    ++kept;
+  }
+  EXPECT_GT(kept, before.faceCount() / 3);
+  for (int v = 0; v < before.vertexCount(); ++v)
+    if (!touchesCap[v]) { EXPECT_EQ(m.positions[v], before.positions[v]) << "vertex " << v; }
+  EXPECT_LT(r.energyFinal, r.energyInitial);
 }
 
 TEST(Flow, LimitsCancellationAndErrors) {

@@ -1,12 +1,16 @@
-// 1-to-4 midpoint subdivision (the coarse-to-fine schedule's refinement step).
+// 1-to-4 midpoint subdivision (the coarse-to-fine schedule's refinement step), of the whole mesh
+// and of a region (fair() on a selection).
 #include "test_meshes.h"
 
+#include <elastica/errors.h>
 #include <elastica/shapes.h>
 #include <elastica/subdivision.h>
 #include <elastica/topology.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <vector>
 
 using namespace elastica;
@@ -31,4 +35,90 @@ TEST(Subdivision, KeepsOldVerticesAndQuadruplesFaces) {
   }
   const Topology t2(m.vertexCount(), m.faces);
   EXPECT_EQ(t2.eulerCharacteristic(), t.eulerCharacteristic());
+}
+
+namespace {
+
+double area(const TriMesh& m, const Face& f) {
+  return 0.5 * (m.positions[f[1]] - m.positions[f[0]]).cross(m.positions[f[2]] - m.positions[f[0]]).norm();
+}
+
+// A face as its vertex cycle starting at its smallest index (the same triangle, same orientation).
+Face canonical(Face f) {
+  std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  return f;
+}
+
+}  // namespace
+
+// Subdividing a region ("Affect only selected faces"): the region's faces split 1-to-4, and each
+// face sharing one, two or three edges with it splits into 2, 3 or 4 so that no vertex hangs on
+// an edge; every other face stays as it was, at its index; no vertex moves.
+TEST(Subdivision, RegionOnlyStaysConformingAndKeepsTheRest) {
+  TriMesh m = test::jittered(shapes::torus(3, 1, 12, 6), 0.1, 9);
+  const TriMesh before = m;
+  const Topology t(m.vertexCount(), m.faces);
+  std::vector<std::uint8_t> flags(m.faceCount());
+  for (int f = 0; f < m.faceCount(); ++f) flags[f] = (f * 7919) % 10 < 3;  // scattered: every kind of neighbour
+  const std::vector<std::uint8_t> region = flags;
+
+  // What to expect, from the input's edges: which are the region's, and how many each face has.
+  int regionEdges = 0, expectedFaces = 0, flagged = 0;
+  std::vector<int> cutEdges(m.faceCount(), 0);  // per face: its edges that are the region's
+  for (int e = 0; e < t.edgeCount(); ++e) {
+    const auto& corners = t.edgeOppositeCorners(e);
+    const bool inRegion = region[corners[0] / 3] || (corners[1] >= 0 && region[corners[1] / 3]);
+    if (!inRegion) continue;
+    ++regionEdges;
+    for (int c : corners)
+      if (c >= 0) ++cutEdges[c / 3];
+  }
+  std::array<int, 4> neighbours{};  // unflagged faces by number of region edges
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const int cuts = cutEdges[f];
+    flagged += region[f];
+    if (!region[f]) ++neighbours[cuts];
+    expectedFaces += region[f] ? 4 : 1 + cuts;
+  }
+  for (int cuts = 0; cuts < 4; ++cuts) ASSERT_GT(neighbours[cuts], 0) << "no unflagged face with " << cuts << " cut edges";
+
+  subdivideMidpointRegion(m, flags);
+  EXPECT_EQ(m.vertexCount(), before.vertexCount() + regionEdges);
+  EXPECT_EQ(m.faceCount(), expectedFaces);
+  ASSERT_EQ(flags.size(), m.faces.size());
+  EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 4 * flagged);
+  for (int v = 0; v < before.vertexCount(); ++v) EXPECT_EQ(m.positions[v], before.positions[v]);
+  // Conforming and oriented as before: the closed torus stays closed, every edge on two faces
+  // traversed in opposite directions, with the same Euler characteristic and area.
+  const Topology t2(m.vertexCount(), m.faces);
+  EXPECT_EQ(t2.boundaryEdgeCount(), 0);
+  EXPECT_EQ(t2.inconsistentEdgeCount(), 0);
+  EXPECT_EQ(t2.eulerCharacteristic(), t.eulerCharacteristic());
+  double a0 = 0, a1 = 0, r0 = 0, r1 = 0;
+  for (int f = 0; f < before.faceCount(); ++f) a0 += area(before, before.faces[f]), r0 += region[f] ? area(before, before.faces[f]) : 0;
+  for (int f = 0; f < m.faceCount(); ++f) a1 += area(m, m.faces[f]), r1 += flags[f] ? area(m, m.faces[f]) : 0;
+  EXPECT_NEAR(a1, a0, 1e-12 * a0);
+  EXPECT_NEAR(r1, r0, 1e-12 * r0);  // the flagged children cover exactly the region
+  // Faces without a region edge are untouched, at their index.
+  for (int f = 0; f < before.faceCount(); ++f)
+    if (cutEdges[f] == 0) { EXPECT_EQ(m.faces[f], before.faces[f]) << "face " << f; }
+}
+
+// The whole mesh as the region: the same triangles as subdivideMidpoint.
+TEST(Subdivision, RegionOfEveryFaceIsTheWholeSubdivision) {
+  TriMesh whole = test::jittered(shapes::icosphere(1.0, 1), 0.05, 3);
+  TriMesh region = whole;
+  std::vector<std::uint8_t> flags(region.faceCount(), 1);
+  subdivideMidpoint(whole);
+  subdivideMidpointRegion(region, flags);
+  EXPECT_EQ(region.positions, whole.positions);
+  std::vector<Face> a, b;
+  for (const Face& f : whole.faces) a.push_back(canonical(f));
+  for (const Face& f : region.faces) b.push_back(canonical(f));
+  std::sort(a.begin(), a.end());
+  std::sort(b.begin(), b.end());
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), region.faceCount());
+  std::vector<std::uint8_t> wrong(3, 1);
+  EXPECT_THROW(subdivideMidpointRegion(region, wrong), InvalidInputError);
 }

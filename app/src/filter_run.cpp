@@ -182,9 +182,12 @@ FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, cons
   FairingResult r = runFairing(std::move(mesh), std::move(selection), opt, v.getBool("colorByMeanCurvature"));
   const std::string warning = limitWarning(r.report.stop, filterSpec(FilterId::Fairing, {}), opt);
   if (!warning.empty()) r.log.push_back(warning);
-  if (selected && opt.subdivisionLevels > 0)
-    r.log.push_back("the whole mesh was subdivided (" + std::to_string(opt.subdivisionLevels) +
-                    " levels); only the selected faces moved, and they are selected in the refined mesh");
+  const int levels = r.report.stages.empty() ? 0 : r.report.stages.back().level;
+  if (selected && levels > 0)
+    r.log.push_back("only the selected faces were subdivided (" + std::to_string(levels) +
+                    (levels == 1 ? " level" : " levels") +
+                    "; the faces along the selection were split to keep the mesh conforming); only they moved, "
+                    "and they are selected in the refined mesh");
   return r;
 }
 

@@ -51,28 +51,25 @@ ParamSpec enumParam(std::string name, int value, std::vector<std::string> values
 // value: append only).
 ParamSpec flowParam() {
   return enumParam("flow", 0, labels<FlowType>(), "Flow",
-                   "Elastica: F = -Lap H - 2H(H^2-K), converges to elastica (Willmore) surfaces such as round "
-                   "spheres. Laplacian of mean curvature: F = -Lap H, keeps the volume, converges to constant mean "
-                   "curvature. Bilaplacian: the equal-weight bi-umbrella, the paper's comparison (shrinks).");
+                   "Elastica: toward round (Willmore) surfaces. Laplacian of mean curvature: keeps the volume. "
+                   "Bilaplacian: the paper's comparison (shrinks).");
 }
 ParamSpec schemeParam(Scheme defaultScheme) {
   return enumParam("scheme", indexOf(defaultScheme), labels<Scheme>(), "Time integration",
-                   "Explicit: the paper's step tau = A_min^2/150 (the number of steps grows like the square of "
-                   "the vertex count). Semi-implicit: implicit in the fourth-order part, adaptive step, far fewer "
-                   "steps (Elastica and Laplacian of mean curvature only).");
+                   "Semi-implicit: few adaptive steps (not for the Bilaplacian). Explicit: the paper's scheme, "
+                   "steps grow as the vertex count squared.");
 }
 ParamSpec maxStepsParam() {
   return intParam("maxSteps", int(FlowOptions{}.maxSteps), "Maximum steps",
-                  "Upper bound on the number of steps over all stages; the flow normally stops earlier, at the "
-                  "energy plateau.",
+                  "Over all stages; the flow normally stops earlier, at the energy plateau.",
                   0, kUnbounded);
 }
 // The wall-time limit: MeshLab 2020.09 cannot cancel a running filter (its progress callback
 // always answers "go on"), so this bounds how long a run keeps MeshLab busy.
 ParamSpec maxSecondsParam() {
   return floatParam("maxSeconds", kDefaultMaxSeconds, "Time limit (s)",
-                    "Stop after this many seconds and keep the mesh as the flow left it (a warning says so); 0 "
-                    "means no limit. MeshLab cannot cancel a running filter, so this bounds how long it stays busy.",
+                    "Then stop and keep the result, with a warning; 0: no limit. (MeshLab cannot cancel a "
+                    "running filter.)",
                     0);
 }
 
@@ -81,13 +78,11 @@ FilterSpec fairing(const MeshFacts& mesh) {
   s.id = FilterId::Fairing;
   s.name = "Discrete Elastica Fairing";
   s.info = std::string(
-               "Fairs the mesh with the discrete elastica flow: every vertex moves along its normal with speed "
-               "F = -&Delta;<sub>B</sub>H - 2H(H<sup>2</sup> - K), computed with the cotangent Laplace-Beltrami "
-               "operator and the angle-deficit Gaussian curvature, which is the gradient descent of the total "
-               "curvature &int;(k<sub>1</sub><sup>2</sup> + k<sub>2</sub><sup>2</sup>) dA, while a tangential "
-               "drift keeps the triangles even. Optionally the mesh is refined coarse to fine (1-to-4 "
-               "subdivision each time the flow is near steady state); with a fixed boundary, the boundary and "
-               "the next ring of vertices stay put so that position and tangent plane are kept.") +
+               "Fairs the mesh with the discrete elastica flow, the gradient descent of the total curvature "
+               "&int;(k<sub>1</sub><sup>2</sup> + k<sub>2</sub><sup>2</sup>) dA: every vertex moves along its "
+               "normal with speed F = -&Delta;<sub>B</sub>H - 2H(H<sup>2</sup> - K) (cotangent Laplace-Beltrami "
+               "operator, angle-deficit Gaussian curvature), while a tangential drift keeps the triangles "
+               "even.") +
            kReference;
   s.params = {
       flowParam(),
@@ -95,24 +90,21 @@ FilterSpec fairing(const MeshFacts& mesh) {
       maxStepsParam(),
       maxSecondsParam(),
       intParam("subdivisionLevels", 0, "Subdivision levels",
-               "Coarse to fine: how many times the mesh is split 1-to-4 at edge midpoints, each time when the "
-               "flow is near steady state (each level has four times the faces). The whole mesh is split, also "
-               "with 'Affect only selected faces' (the selection is split with it and only it moves).",
+               "Coarse to fine: 1-to-4 splits, each when the flow is near steady state; with 'Affect only "
+               "selected faces', of the selection only.",
                0, 8),
       floatParam("energyTolerance", float(FlowOptions{}.energyTolerance), "Energy tolerance",
-                 "Stop when the relative change of the total curvature energy per unit of normalised time falls "
-                 "below this (independent of scale and resolution; smaller is rounder and slower).",
+                 "Stop when the energy's relative change per unit of normalised time is below this (smaller: "
+                 "rounder, slower).",
                  0),
       boolParam("tangentialDrift", true, "Tangential drift",
-                "Move vertices tangentially (area-weighted bi-umbrella, paper eq. 2.5) to keep triangles even."),
+                "Move vertices tangentially to keep the triangles even (paper eq. 2.5)."),
       enumParam("boundary", indexOf(FlowOptions{}.boundary), labels<BoundaryMode>(), "Boundary",
-                "Fixed: boundary vertices and their neighbours stay put (G1 clamp). Slide: boundary vertices "
-                "slide along the original boundary polyline."),
+                "Fixed: the boundary and the next ring stay put (G1). Slide: the boundary slides along itself."),
       boolParam("Selected", mesh.selectedFaces > 0, "Affect only selected faces",
-                "Only vertices whose faces are all selected move; two rings around the selection stay fixed."),
+                "Only vertices whose faces are all selected move; two rings around them stay fixed."),
       boolParam("colorByMeanCurvature", false, "Colour by mean curvature",
-                "Afterwards store the mean curvature H (+1/r on a sphere) as vertex quality and colour the "
-                "vertices by it (red low, blue high)."),
+                "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high)."),
   };
   return s;
 }
@@ -131,16 +123,14 @@ FilterSpec fillHoles() {
            kReference;
   s.params = {
       intParam("MaxHoleSize", defaults.maxHoleEdges, "Max size to be closed",
-               "Holes whose boundary has more edges than this are left open (counted as in MeshLab's Close "
-               "Holes).",
+               "Holes with more border edges than this stay open (counted as in MeshLab's Close Holes).",
                3, kUnbounded, "a hole has 3 edges or more"),
       flowParam(),
       schemeParam(defaults.flow.scheme),
       maxStepsParam(),
       maxSecondsParam(),
       boolParam("NewFaceSelected", true, "Select the newly created faces",
-                "Afterwards only the new faces are selected (any previous selection is replaced; when no hole "
-                "is filled the mesh and its selection stay as they were)."),
+                "Afterwards only the new faces are selected (with no hole filled, the selection stays)."),
   };
   return s;
 }
@@ -158,11 +148,9 @@ FilterSpec curvature() {
            kReference;
   s.params = {
       boolParam("lambdaFix", false, "Paper's lambda fix",
-                "Where H² is below K (impossible on smooth surfaces, common on meshes), rescale H by the "
-                "paper's lambda (guarded: lambda at least 0.5)."),
+                "Where H² is below K (common on meshes), rescale H by the paper's lambda (at least 0.5)."),
       enumParam("area", indexOf(VertexArea::Mixed), labels<VertexArea>(), "Vertex area",
-                "Mixed: Meyer et al.'s mixed Voronoi area (H and K converge under refinement). Barycentric: the "
-                "paper's A/3 (H off by up to ~15 % at irregular vertices)."),
+                "Mixed: Meyer et al.'s Voronoi area (converges). Barycentric: the paper's A/3 (H up to 15 % off)."),
   };
   return s;
 }

@@ -237,6 +237,39 @@ def test_filters_describe_the_meshlab_parameters(tmp_path):
     elastica.fair(V, F, **{**defaults("fair"), "max_steps": 5})  # every keyword is accepted
 
 
+def test_example_scripts_list_every_parameter_at_its_default():
+    """meshlab_plugin/examples/*.mlx run each filter as its dialog opens on a mesh without a
+    selection: every parameter listed (Debian's meshlabserver aborts on a script that leaves one
+    out), each at the default filters() reports, enums with the dialog's entries."""
+    import xml.etree.ElementTree as ET
+
+    by_name = {spec["name"]: spec for spec in elastica.filters().values()}
+    examples = os.path.join(os.path.dirname(DATA), "meshlab_plugin", "examples")
+    seen = set()
+    for script in sorted(os.listdir(examples)):
+        assert script.endswith(".mlx"), script
+        for f in ET.parse(os.path.join(examples, script)).getroot().iter("filter"):
+            spec = by_name[f.get("name")]
+            seen.add(f.get("name"))
+            params = {p.get("name"): p for p in f.iter("Param")}
+            assert set(params) == {p["name"] for p in spec["parameters"]}, script
+            for p in spec["parameters"]:
+                got = params[p["name"]]
+                where = f"{script}: {p['name']}"
+                if p["type"] == "bool":
+                    assert got.get("type") == "RichBool" and got.get("value") == str(p["default"]).lower(), where
+                elif p["type"] == "int":
+                    assert got.get("type") == "RichInt" and int(got.get("value")) == p["default"], where
+                elif p["type"] == "float":
+                    assert got.get("type") == "RichFloat" and float(got.get("value")) == pytest.approx(p["default"]), where
+                else:
+                    assert got.get("type") == "RichEnum", where
+                    assert int(got.get("value")) == p["choices"].index(p["default"]), where
+                    entries = [got.get(f"enum_val{i}") for i in range(int(got.get("enum_cardinality")))]
+                    assert entries == p["labels"], where
+    assert seen == set(by_name)  # an example for every filter
+
+
 def test_cmake_install_puts_the_module_on_the_python_path(tmp_path):
     """`cmake --install` with a prefix: the module lands in ELASTICA_PYTHON_INSTALL_DIR under it and
     imports from there; for the default prefix /usr/local that directory is on the system Python's path."""

@@ -1,7 +1,7 @@
 // The plugin class in process, on MeshLab's own MeshDocument/CMeshO (libmeshlab-common): defaults
 // that follow the mesh, and failures that leave the mesh exactly as it was, with the message in
 // errorMessage and in the log (meshlabserver prints only the log).
-#include "filter_elastica.h"
+#include "filter_elastica_2020.h"
 
 #include <elastica/shapes.h>
 #include <elastica/app/filter_run.h>

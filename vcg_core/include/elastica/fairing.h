@@ -39,9 +39,10 @@ FlowReport fair(TriMesh& mesh, const FlowOptions& opt = {});
 
 /// Fairs only `region` of `mesh`: the vertices whose faces all lie in the region move; every
 /// other vertex keeps its position bit for bit (and, with a fixed boundary, so do the region's
-/// two outer rows, as if the region's border were the mesh's boundary). With subdivision the
-/// region is refined with the mesh (children inherit their parent's membership), and
-/// FlowReport::regionFaces lists the region's faces in the output mesh.
+/// two outer rows, as if the region's border were the mesh's boundary). With subdivision only the
+/// region is refined 1-to-4 (its children form the region), and the faces that share an edge with
+/// it are split to keep the mesh conforming (subdivideMidpointRegion); every other face keeps its
+/// index and vertices. FlowReport::regionFaces lists the region's faces in the output mesh.
 ///
 /// @throws InvalidInputError as the whole-mesh fair(), and if an index of `region` is not a face
 ///         of `mesh` or the region leaves no vertex free to move; the mesh is then unchanged.

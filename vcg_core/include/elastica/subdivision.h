@@ -14,4 +14,14 @@ namespace elastica {
 /// `faceFlags` is given (one byte per face), each child face inherits its parent's flag.
 void subdivideMidpoint(TriMesh& mesh, std::vector<std::uint8_t>* faceFlags = nullptr);
 
+/// Subdivides only the region of `mesh` flagged in `faceFlags` (one byte per face): each flagged
+/// face splits 1-to-4 at its edge midpoints, and so that the mesh stays conforming each unflagged
+/// face splits at the midpoints of those of its edges that it shares with the region: into 2
+/// (one such edge), 3 (two; the quad cut along its shorter diagonal) or 4 (three). No vertex
+/// moves and every other face is kept as it was, at its index. Old vertices keep their indices;
+/// midpoints are appended; a split face's first child takes its index, the other children are
+/// appended. `faceFlags` is updated: the children of flagged faces are flagged, no other face is.
+/// With every face flagged the result is subdivideMidpoint's, faces in another order.
+void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags);
+
 }  // namespace elastica

@@ -1,6 +1,5 @@
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
-#include <elastica/subdivision.h>
 #include "flow/fair_masked.h"
 #include "flow/explicit_integrator.h"
 #include "flow/flow_state.h"
@@ -323,7 +322,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     if (!refineLater) break;
     reflows = 0;
     report.stop = StopReason::Converged;  // the next stage decides
-    subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
+    subdivideOneLevel(mesh, selection);
   }
   if (faceSelected && !faceSelected->empty()) *faceSelected = selection;
   report.seconds = run.elapsed();

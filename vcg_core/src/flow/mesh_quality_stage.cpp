@@ -46,13 +46,20 @@ int workingResolutionFloor(const TriMesh& mesh) {
   return kVerticesPerHandle * (genus + 1);
 }
 
+void subdivideOneLevel(TriMesh& mesh, std::vector<std::uint8_t>& selection) {
+  if (selection.empty())
+    subdivideMidpoint(mesh);
+  else
+    subdivideMidpointRegion(mesh, selection);
+}
+
 int subdivideToWorkingResolution(TriMesh& mesh, std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
   const int floor = workingResolutionFloor(mesh);
   int levels = 0;
   while (levels < opt.subdivisionLevels && movingVertexCount(mesh, selection, opt.boundary) < floor &&
          (opt.targetEdgeLength <= 0 ||
           meanEdgeLength(Topology(mesh.vertexCount(), mesh.faces), mesh.positions) > opt.targetEdgeLength)) {
-    subdivideMidpoint(mesh, selection.empty() ? nullptr : &selection);
+    subdivideOneLevel(mesh, selection);
     ++levels;
   }
   return levels;

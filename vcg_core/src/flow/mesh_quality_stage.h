@@ -23,7 +23,12 @@ namespace elastica {
 /// schedule subdivides before flowing, within the levels the caller asked for.
 int workingResolutionFloor(const TriMesh& mesh);
 
-/// Subdivides `mesh` (1-to-4, `selection` following) while fewer than workingResolutionFloor()
+/// One level of the coarse-to-fine refinement: the whole mesh 1-to-4 (`selection` empty), or only
+/// the selected faces, their neighbours split to stay conforming (subdivideMidpointRegion;
+/// `selection` follows).
+void subdivideOneLevel(TriMesh& mesh, std::vector<std::uint8_t>& selection);
+
+/// Subdivides `mesh` (subdivideOneLevel) while fewer than workingResolutionFloor()
 /// vertices move, at most opt.subdivisionLevels times and not below opt.targetEdgeLength.
 /// Returns the number of subdivisions made: the levels the schedule has used up.
 int subdivideToWorkingResolution(TriMesh& mesh, std::vector<std::uint8_t>& selection, const FlowOptions& opt);

@@ -1,20 +1,40 @@
+#include <elastica/errors.h>
 #include <elastica/subdivision.h>
 
 #include <algorithm>
+#include <string>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace elastica {
+namespace {
+
+std::uint64_t edgeKey(int a, int b) {
+  const auto [lo, hi] = std::minmax(a, b);
+  return (std::uint64_t(std::uint32_t(lo)) << 32) | std::uint32_t(hi);
+}
+
+// The midpoint vertex of each edge, appended to the mesh on first use.
+class Midpoints {
+ public:
+  explicit Midpoints(TriMesh& mesh) : mesh_(mesh) {}
+  int operator()(int a, int b) {
+    auto [it, inserted] = index_.try_emplace(edgeKey(a, b), mesh_.vertexCount());
+    if (inserted) mesh_.positions.push_back(0.5 * (mesh_.positions[a] + mesh_.positions[b]));
+    return it->second;
+  }
+  void reserve(size_t n) { index_.reserve(n); }
+
+ private:
+  TriMesh& mesh_;
+  std::unordered_map<std::uint64_t, int> index_;
+};
+
+}  // namespace
 
 void subdivideMidpoint(TriMesh& mesh, std::vector<std::uint8_t>* faceFlags) {
-  std::unordered_map<std::uint64_t, int> midpoint;
-  midpoint.reserve(mesh.faces.size() * 2);
-  auto mid = [&](int a, int b) {
-    const auto [lo, hi] = std::minmax(a, b);
-    const std::uint64_t key = (std::uint64_t(std::uint32_t(lo)) << 32) | std::uint32_t(hi);
-    auto [it, inserted] = midpoint.try_emplace(key, mesh.vertexCount());
-    if (inserted) mesh.positions.push_back(0.5 * (mesh.positions[a] + mesh.positions[b]));
-    return it->second;
-  };
+  Midpoints mid(mesh);
+  mid.reserve(mesh.faces.size() * 2);
   std::vector<Face> next;
   next.reserve(4 * mesh.faces.size());
   std::vector<std::uint8_t> flags;
@@ -30,6 +50,60 @@ void subdivideMidpoint(TriMesh& mesh, std::vector<std::uint8_t>* faceFlags) {
   }
   mesh.faces = std::move(next);
   if (faceFlags) *faceFlags = std::move(flags);
+}
+
+void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags) {
+  if (faceFlags.size() != mesh.faces.size())
+    throw InvalidInputError("subdivideMidpointRegion: " + std::to_string(faceFlags.size()) + " flags for " +
+                            std::to_string(mesh.faces.size()) + " faces");
+  // The edges to split: every edge of a flagged face.
+  std::unordered_set<std::uint64_t> split;
+  for (size_t f = 0; f < mesh.faces.size(); ++f)
+    if (faceFlags[f])
+      for (int k = 0; k < 3; ++k) split.insert(edgeKey(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]));
+
+  Midpoints mid(mesh);
+  mid.reserve(split.size());
+  const size_t faceCount = mesh.faces.size();
+  auto emit = [&](size_t parent, bool first, const Face& child) {
+    if (first) {
+      mesh.faces[parent] = child;
+    } else {
+      mesh.faces.push_back(child);
+      faceFlags.push_back(faceFlags[parent]);
+    }
+  };
+  const auto length2 = [&](int a, int b) { return (mesh.positions[a] - mesh.positions[b]).squaredNorm(); };
+  for (size_t f = 0; f < faceCount; ++f) {
+    const Face t = mesh.faces[f];
+    int cut[3], cuts = 0;  // cut[k]: edge t[k]-t[k+1] is split
+    for (int k = 0; k < 3; ++k) cuts += cut[k] = split.count(edgeKey(t[k], t[(k + 1) % 3])) != 0;
+    if (cuts == 0) continue;
+    if (cuts == 3) {  // flagged, or enclosed by the region: 1-to-4
+      const int a = mid(t[0], t[1]), b = mid(t[1], t[2]), c = mid(t[2], t[0]);
+      emit(f, true, {t[0], a, c});
+      emit(f, false, {t[1], b, a});
+      emit(f, false, {t[2], c, b});
+      emit(f, false, {a, b, c});
+    } else if (cuts == 1) {  // bisected from the opposite corner
+      const int k = cut[0] ? 0 : cut[1] ? 1 : 2;
+      const int p = t[k], q = t[(k + 1) % 3], r = t[(k + 2) % 3], m = mid(p, q);
+      emit(f, true, {p, m, r});
+      emit(f, false, {m, q, r});
+    } else {  // two split edges, p-q and q-r around corner q: the corner triangle, then the quad
+      const int k = !cut[0] ? 1 : !cut[1] ? 2 : 0;  // edge t[k]-t[k+1] is the first split one after the uncut
+      const int p = t[k], q = t[(k + 1) % 3], r = t[(k + 2) % 3];
+      const int m = mid(p, q), n = mid(q, r);
+      emit(f, true, {m, q, n});
+      if (length2(p, n) <= length2(m, r)) {
+        emit(f, false, {p, m, n});
+        emit(f, false, {p, n, r});
+      } else {
+        emit(f, false, {p, m, r});
+        emit(f, false, {m, n, r});
+      }
+    }
+  }
 }
 
 }  // namespace elastica

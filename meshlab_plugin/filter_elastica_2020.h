@@ -1,10 +1,9 @@
-// The MeshLab filter plugin (libfilter_elastica.so): a thin adapter between MeshLab's filter
-// interface and the shared filter layer (filters/: names, parameters, core calls). It owns no
-// numerics: parameters go from RichParameters into ParamValues, the mesh from CMeshO into the core
-// and back, progress into MeshLab's callback, exceptions into MeshLab's error message and log.
+// The plugin class for MeshLab 2020.09 (Debian 12; ELASTICA_MESHLAB_API=2020): MeshFilterInterface,
+// a thin adapter over the shared filter code (filter_common.h), which does the work. Built as
+// libfilter_elastica.so, run-tested in meshlabserver and the GUI (tests/plugin/).
 #pragma once
 
-#include <common/interfaces.h>
+#include "meshlab_api.h"
 
 #include <QObject>
 
