@@ -40,7 +40,7 @@ nlohmann::json toJson(const HoleReport& h) {
   j["border_bound_degrees"] = h.borderBoundDegrees;
   j["seconds"] = h.seconds;
   for (const FillStageReport& s : h.stages) {
-    nlohmann::json stage{{"stage", s.stage}, {"kept", s.kept}, {"min_angle_degrees", s.minAngleDegrees}, {"energy", s.energy}, {"steps", s.steps}};
+    nlohmann::json stage{{"stage", s.stage}, {"kept", s.kept}, {"min_angle_degrees", s.minAngleDegrees}, {"energy", s.energy}, {"steps", s.steps}, {"seconds", s.seconds}};
     if (!s.why.empty()) stage["why"] = s.why;
     j["stages"].push_back(stage);
   }

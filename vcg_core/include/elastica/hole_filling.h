@@ -72,6 +72,7 @@ struct FillStageReport {
   double minAngleDegrees = 0;  ///< what the stage left, kept or not
   double energy = 0;           ///< total curvature energy of the region, kept or not
   long long steps = 0;         ///< flow steps the stage took
+  double seconds = 0;          ///< wall time of the stage, its measuring included
   std::string why;             ///< why it was not kept ("smallest angle lower", "energy higher", an error)
 };
 

@@ -24,16 +24,17 @@ double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
   return std::acos(std::clamp(largestCos, -1.0, 1.0)) * 180 / std::acos(-1.0);
 }
 
-// Vertices whose faces all have angles above this are left where they are: the aim is the 25° of
-// issue 15, with a margin; moving well-shaped vertices only costs time.
-constexpr double kGoodEnoughDegrees = 35;
+// Ears thinner than this are split (the 25° of issue 15).
+constexpr double kEarDegrees = 25;
 
 Vec3 faceNormal(const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a); }
 
 class PatchAngles {
  public:
-  PatchAngles(TriMesh& mesh, const std::vector<std::uint8_t>& patchFace, int firstNew)
-      : m_(mesh), patch_(patchFace), firstNew_(firstNew), faces_(mesh.positions.size()) {
+  PatchAngles(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+              double goodEnough)
+      : m_(mesh), patch_(patchFace), sigma_(sigma), firstNew_(firstNew), goodEnough_(goodEnough),
+        faces_(mesh.positions.size()) {
     for (int f = 0; f < static_cast<int>(m_.faces.size()); ++f)
       for (int v : m_.faces[f]) faces_[v].push_back(f);
   }
@@ -42,6 +43,32 @@ class PatchAngles {
     int moves = 0;
     for (int v = firstNew_; v < static_cast<int>(m_.positions.size()); ++v) moves += place(v);
     return moves;
+  }
+
+  // An ear: a patch face whose three corners are on the border (two border edges and the corner
+  // between them), too thin because the two border edges differ in length. No flip or move can
+  // widen it (its corners never move): its inner edge is split at the midpoint, and the new vertex
+  // then becomes the apex of both border edges (movePass). On a 198-edge hole cut in CGAL's
+  // armadillo every face below 25° was such an ear.
+  int splitEars() {
+    int splits = 0;
+    const int faceCount = static_cast<int>(m_.faces.size());
+    for (int f = 0; f < faceCount; ++f) {
+      if (!patch_[f]) continue;
+      const Face t = m_.faces[f];
+      if (t[0] >= firstNew_ || t[1] >= firstNew_ || t[2] >= firstNew_) continue;
+      const Vec3 &p0 = m_.positions[t[0]], &p1 = m_.positions[t[1]], &p2 = m_.positions[t[2]];
+      if (smallestAngle(p0, p1, p2) >= kEarDegrees) continue;
+      for (int k = 0; k < 3; ++k) {
+        const int a = t[k], b = t[(k + 1) % 3];
+        const int g = across(f, a, b);
+        if (g < 0 || !patch_[g]) continue;  // a border edge
+        split(f, g, a, b);
+        ++splits;
+        break;
+      }
+    }
+    return splits;
   }
 
   int flipPass() {
@@ -107,7 +134,20 @@ class PatchAngles {
       candidates.push_back(0.5 * (candidates.back() + here));  // halfway, in case the full move folds
     }
     double best = worstAngle(v, here, normal);
-    if (best >= kGoodEnoughDegrees) return false;
+    if (best >= goodEnough_) return false;
+    // And small steps around it (a compass search): where the ideal places fold a face or trade
+    // one thin face for another, a step of a tenth or a quarter of the mean edge often helps.
+    double reach = 0;
+    for (int f : around)
+      for (int x : m_.faces[f])
+        if (x != v) reach += (m_.positions[x] - here).norm();
+    reach /= neighbours;
+    const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+    for (double step : {0.1, 0.25})
+      for (int k = 0; k < 8; ++k) {
+        const double phi = k * std::acos(-1.0) / 4;
+        candidates.push_back(here + step * reach * (std::cos(phi) * e1 + std::sin(phi) * e2));
+      }
     Vec3 bestPlace = here;
     for (const Vec3& c : candidates) {
       const Vec3 p = here + (c - here) - (c - here).dot(normal) * normal;  // within the tangent plane
@@ -155,6 +195,31 @@ class PatchAngles {
     return true;
   }
 
+  // Splits edge (a, b) between f = (a, b, c) and g = (b, a, d) at its midpoint m into (a, m, c),
+  // (m, b, c), (b, m, d), (m, a, d); the two new faces are appended, flagged as patch faces.
+  void split(int f, int g, int a, int b) {
+    const int c = third(f, a, b), d = third(g, b, a);
+    const int m = static_cast<int>(m_.positions.size());
+    m_.positions.push_back(0.5 * (m_.positions[a] + m_.positions[b]));
+    sigma_.push_back(0.5 * (sigma_[a] + sigma_[b]));
+    faces_.emplace_back();
+    const int f2 = static_cast<int>(m_.faces.size()), g2 = f2 + 1;
+    m_.faces[f] = {a, m, c};
+    m_.faces[g] = {b, m, d};
+    m_.faces.push_back({m, b, c});
+    m_.faces.push_back({m, a, d});
+    patch_.push_back(1);
+    patch_.push_back(1);
+    auto drop = [&](int v, int face) { faces_[v].erase(std::find(faces_[v].begin(), faces_[v].end(), face)); };
+    drop(b, f);
+    drop(a, g);
+    faces_[b].push_back(f2);
+    faces_[c].push_back(f2);
+    faces_[a].push_back(g2);
+    faces_[d].push_back(g2);
+    faces_[m] = {f, g, f2, g2};
+  }
+
   // The vertex of face f that is neither a nor b.
   int third(int f, int a, int b) const {
     for (int x : m_.faces[f])
@@ -163,16 +228,19 @@ class PatchAngles {
   }
 
   TriMesh& m_;
-  const std::vector<std::uint8_t>& patch_;
+  std::vector<std::uint8_t>& patch_;
+  std::vector<double>& sigma_;
   int firstNew_;
+  double goodEnough_;  // vertices whose faces all have angles above this stay where they are
   std::vector<std::vector<int>> faces_;
 };
 
 }  // namespace
 
-int improvePatchAngles(TriMesh& mesh, const std::vector<std::uint8_t>& patchFace, int firstNew, int passes) {
-  PatchAngles patch(mesh, patchFace, firstNew);
-  int changes = 0;
+int improvePatchAngles(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+                       double goodEnoughDegrees, int passes) {
+  PatchAngles patch(mesh, patchFace, sigma, firstNew, goodEnoughDegrees);
+  int changes = patch.splitEars();
   for (int pass = 0; pass < passes; ++pass) {
     const int made = patch.flipPass() + patch.movePass();
     changes += made;

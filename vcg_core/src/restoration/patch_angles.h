@@ -6,7 +6,7 @@
 // the centroid of its neighbours and, for each border edge it faces, the apex of the equilateral
 // triangle on that edge — and patch edges are flipped where that raises the smaller angle of their
 // two faces (faces touching the border included; edges of the border itself and faces outside the
-// patch never change).
+// patch never change). An ear (three border corners) is split first: its corners cannot move.
 #pragma once
 
 #include <elastica/types.h>
@@ -16,10 +16,15 @@
 
 namespace elastica {
 
-/// Improves the smallest angles of the faces flagged in `patchFace` by moving the vertices from
-/// `firstNew` on (tangentially) and flipping edges between two patch faces. No face turns over;
-/// vertices before `firstNew`, faces outside the patch and the number and flags of faces stay.
-/// Returns the number of moves and flips made.
-int improvePatchAngles(TriMesh& mesh, const std::vector<std::uint8_t>& patchFace, int firstNew, int passes = 8);
+/// Improves the smallest angles of the faces flagged in `patchFace` by splitting ears (patch faces
+/// with all three corners on the border, below 25°: their inner edge, at its midpoint), moving
+/// the vertices from `firstNew` on (tangentially) and flipping edges between two patch faces. No
+/// face turns over; vertices before `firstNew` and faces outside the patch stay as they are. Split
+/// points are appended (`sigma` gets the mean of the edge's ends), their faces appended flagged.
+/// Vertices whose faces all have angles of `goodEnoughDegrees` or more stay where they are (35°
+/// by default: the 25° of issue 15 with a margin, for a patch about to be flowed).
+/// Returns the number of splits, moves and flips made.
+int improvePatchAngles(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+                       double goodEnoughDegrees = 35, int passes = 8);
 
 }  // namespace elastica
