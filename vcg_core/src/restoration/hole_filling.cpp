@@ -3,6 +3,7 @@
 #include <elastica/mesh_quality.h>
 #include <elastica/topology.h>
 #include "flow/fair_masked.h"
+#include "mesh/self_intersection.h"
 #include "restoration/biharmonic_embedding.h"
 #include "restoration/hole_boundary.h"
 #include "restoration/hole_pinches.h"
@@ -38,7 +39,7 @@ constexpr double kRemeshBelowDegrees = 25;
 // the bunny-flank start (24°) cost 4 ms, twice the rest of the flow, and ended at 31.5° instead of
 // 32.8°; a 200-edge hole in a 44k-vertex scan (start 14°) spent 40 % of its fill remeshing, and
 // ended at 34.8° with it (and 40 % slower), 32.1° without.
-constexpr double kRemeshStartBelowDegrees = 10;
+constexpr double kRemeshStartBelowDegrees = 10;  // a 110° cap starts at 5°; from there the flow folds it
 // The angle every patch face should reach (issue 15): a stage may lower the patch's smallest angle
 // only down to this, or to what it was given if that was already lower.
 constexpr double kTargetAngleDegrees = 25;
@@ -109,9 +110,13 @@ class MonotonePatch {
     const bool lowerAngle = m.minAngleDegrees < std::min(before.minAngleDegrees, kTargetAngleDegrees) - 1e-9;
     const bool higherEnergy =
         energy && !(m.energy <= before.energy + kEnergySlack * std::max(std::abs(before.energy), 1.0));
-    const bool keep = !lowerAngle && !higherEnergy;
+    // Faces that cross (the patch through itself or its surroundings within the piece) undo a
+    // stage too: the fill's flow runs without the fairing's embedding guard.
+    const bool crossing = !lowerAngle && !higherEnergy && selfIntersects(sub_, &patchFace_);
+    const bool keep = !lowerAngle && !higherEnergy && !crossing;
     if (keep) kept_ = {sub_, patchFace_, sigma_, m};
-    record(stage, keep, m, steps, keep ? "" : lowerAngle ? "smallest angle lower" : "energy higher");
+    record(stage, keep, m, steps,
+           keep ? "" : lowerAngle ? "smallest angle lower" : higherEnergy ? "energy higher" : "faces cross");
     return keep;
   }
 
@@ -229,7 +234,11 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   // slivers. Judged like any stage; the flow goes on from it either way (from the slivers, the
   // flow folded the patch of a 110° cap through itself).
   if (patch.kept().minAngleDegrees < kRemeshStartBelowDegrees) {
-    remeshPatch(sub, patchFace, sigma, firstNew);
+    // Half the rounds of a full remeshing: patch_angles and the flow's flips finish the job (a
+    // 6,000-vertex patch spent 0.9 s, more than its flow, in ten rounds).
+    PatchRemeshingOptions rounds;
+    rounds.iterations = rounds.relaxPasses = 5;
+    remeshPatch(sub, patchFace, sigma, firstNew, rounds);
     patch.judge("remeshing", 0);
   }
   flowStage("flow", [&] { relaxTangentially(sub, freeVertices()); });
