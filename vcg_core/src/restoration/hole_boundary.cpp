@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
+#include <unordered_set>
 
 namespace elastica {
 
@@ -98,8 +100,92 @@ std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFac
 }
 
 namespace {
+
 double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+// A loop's outline: centroid, unit mean normal (Newell's), radius (farthest vertex from the
+// centroid) and bounding box.
+struct Outline {
+  Vec3 centroid = Vec3::Zero(), normal = Vec3::Zero(), lo, hi;
+  double radius = 0;
+};
+
+Outline outlineOf(const std::vector<Vec3>& positions, const HoleLoop& loop) {
+  Outline o;
+  const int n = loop.edgeCount();
+  o.lo = o.hi = positions[loop.vertices[0]];
+  for (int v : loop.vertices) {
+    o.centroid += positions[v];
+    o.lo = o.lo.cwiseMin(positions[v]);
+    o.hi = o.hi.cwiseMax(positions[v]);
+  }
+  o.centroid /= n;
+  for (int i = 0; i < n; ++i)
+    o.normal += (positions[loop.vertices[i]] - o.centroid).cross(positions[loop.vertices[(i + 1) % n]] - o.centroid);
+  if (o.normal.norm() > 0) o.normal.normalize();
+  for (int v : loop.vertices) o.radius = std::max(o.radius, (positions[v] - o.centroid).norm());
+  return o;
+}
+
+// The winding number of `outer`'s loop around point p, seen along the outline's normal.
+double windingAround(const std::vector<Vec3>& positions, const HoleLoop& outer, const Outline& o, const Vec3& p) {
+  const Vec3 u = o.normal.unitOrthogonal(), w = o.normal.cross(u);
+  double turn = 0;
+  const int n = outer.edgeCount();
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a = positions[outer.vertices[i]] - p, b = positions[outer.vertices[(i + 1) % n]] - p;
+    turn += std::atan2(a.dot(u) * b.dot(w) - a.dot(w) * b.dot(u), a.dot(u) * b.dot(u) + a.dot(w) * b.dot(w));
+  }
+  return turn / (2 * std::acos(-1.0));
+}
+
+// The vertices of the piece of the mesh that holds `seed`, or nothing if it has more than `limit`
+// faces.
+std::optional<std::unordered_set<int>> pieceOf(const TriMesh& mesh, const VertexFaceIndex& adjacency, int seed, std::size_t limit) {
+  std::unordered_set<int> vertices{seed}, faces;
+  std::vector<int> stack{seed};
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (int f : adjacency[v]) {
+      if (!faces.insert(f).second) continue;
+      if (faces.size() > limit) return std::nullopt;
+      for (int x : mesh.faces[f])
+        if (vertices.insert(x).second) stack.push_back(x);
+    }
+  }
+  return vertices;
+}
+
 }  // namespace
+
+std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<HoleLoop>& loops) {
+  const int n = static_cast<int>(loops.size());
+  std::vector<int> holeOf(n, -1);
+  if (n < 2) return holeOf;
+  std::vector<Outline> outlines;
+  for (const HoleLoop& loop : loops) outlines.push_back(outlineOf(mesh.positions, loop));
+  for (int i = 0; i < n; ++i) {
+    const Outline& island = outlines[i];
+    for (int j = 0; j < n && holeOf[i] < 0; ++j) {
+      const Outline& hole = outlines[j];
+      if (j == i || hole.radius <= island.radius) continue;
+      // Inside the hole's box (grown by its radius), near its mean plane, within its outline.
+      if ((island.lo - hole.lo).minCoeff() < -hole.radius || (hole.hi - island.hi).minCoeff() < -hole.radius) continue;
+      if (std::abs((island.centroid - hole.centroid).dot(hole.normal)) > hole.radius) continue;
+      if (std::abs(windingAround(mesh.positions, loops[j], hole, island.centroid)) < 0.5) continue;
+      // A separate piece, no larger than a disc of the hole's size could hold, with no other border.
+      const std::size_t limit = 4 * static_cast<std::size_t>(loops[j].edgeCount()) * loops[j].edgeCount() + 64;
+      const auto piece = pieceOf(mesh, adjacency, loops[i].vertices[0], limit);
+      if (!piece || piece->count(loops[j].vertices[0])) continue;
+      bool onlyBorder = true;
+      for (int k = 0; k < n && onlyBorder; ++k)
+        if (k != i && piece->count(loops[k].vertices[0])) onlyBorder = false;
+      if (onlyBorder) holeOf[i] = j;
+    }
+  }
+  return holeOf;
+}
 
 double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v) {
   double sum = 0;

@@ -43,6 +43,14 @@ std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFac
 ///         repeats a vertex (the message names the face): what boundaryHalfEdges needs.
 void checkFaceIndices(const TriMesh& mesh);
 
+/// Islands: for each loop, the index of the loop in whose hole it lies as the border of an island
+/// (a separate piece of the mesh whose only border it is, as a scanner leaves a fragment floating in
+/// a gap: inside the hole's outline seen along the hole's mean normal, and nearer the hole than the
+/// hole is wide), or -1. A disc patch across such a hole would cross the island, and one across
+/// the island's own border would close the island onto itself. Costs in proportion to the loops
+/// and to the islands' faces.
+std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<HoleLoop>& loops);
+
 /// The angle, in radians, that `faces` (the faces around `v`, in `mesh`) span at `v`: the sum of
 /// their corner angles there.
 double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v);

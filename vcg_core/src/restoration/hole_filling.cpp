@@ -344,8 +344,23 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
       });
       for (HoleLoop& loop : split.loops) loops.push_back(std::move(loop));
     }
+    // An island (a fragment inside a hole, bounded by its own loop) leaves both loops open: a disc
+    // across the hole would cross the island, and one across the island's loop would close the
+    // island onto itself. The report says so; the user removes the fragment (or keeps the hole).
+    std::vector<std::string> islandReason(loops.size());
+    const std::vector<int> islandOf = islandsInHoles(output, adjacency, loops);
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      if (islandOf[i] < 0) continue;
+      const HoleLoop& hole = loops[islandOf[i]];
+      islandReason[i] = "the border of an island of faces (a separate piece) inside a hole of " + std::to_string(hole.edgeCount()) +
+                        " border edges: left open with that hole";
+      if (islandReason[islandOf[i]].empty())
+        islandReason[islandOf[i]] = "an island of faces (a separate piece with a border of " + std::to_string(loops[i].edgeCount()) +
+                                    " edges) lies inside it, which a patch would cross: left open";
+    }
     long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
-    for (const HoleLoop& loop : loops) {
+    for (std::size_t l = 0; l < loops.size(); ++l) {
+      const HoleLoop& loop = loops[l];
       const auto holeStart = std::chrono::steady_clock::now();
       HoleReport hole;
       hole.borderEdges = loop.edgeCount();
@@ -361,6 +376,10 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
       }
       if (loop.pinched) {
         skip("its border touches itself at a vertex");
+        continue;
+      }
+      if (!islandReason[l].empty()) {
+        skip(islandReason[l]);
         continue;
       }
       const auto triangles = triangulateHole(output.positions, loop, edgeExists);
