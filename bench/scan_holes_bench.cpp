@@ -4,11 +4,14 @@
 // mesh's own memory.
 //
 //   scan_holes_bench MESH [--subdivide L] [--holes N] [--edges MIN,MAX] [--name NAME] [--write OUT.bin]
+//   scan_holes_bench --header          the table's header (two lines)
 //
-// Prints one Markdown table row: vertices of the holed scan, holes cut and filled, their border
+// Prints one Markdown table row: vertices of the holed scan, holes found and filled, their border
 // edges, new vertices, the fill's seconds (all of it, inside the holes, outside them: the
-// whole-mesh passes), milliseconds per thousand new vertices, the mesh's bytes and the fill's
-// peak resident memory above the mesh, and the fill's peak over the mesh's bytes.
+// whole-mesh passes), milliseconds per thousand new vertices (and a least-squares line over the
+// holes), the mesh's bytes, the fill's peak resident memory above the mesh, that peak (mesh
+// included) over the input's and over the output's bytes, and the border edges left open.
+// --write keeps the filled mesh (raw: counts, then positions and faces as in memory).
 //
 // The fill runs in a child process (this program again, `--fill FILE`) that holds nothing but the
 // holed mesh: the cutter's own arrays would otherwise stay in the allocator's heap and hide what
@@ -277,6 +280,13 @@ double field(const std::string& line, const std::string& key) {
 
 int main(int argc, char** argv) {
   if (argc >= 3 && std::strcmp(argv[1], "--fill") == 0) return fillOnly(argv[2], argc >= 4 ? argv[3] : "");
+  if (argc == 2 && std::strcmp(argv[1], "--header") == 0) {
+    std::printf("| scan | vertices | holes found / filled | border edges min–max (total) | new vertices | fill s | in holes s | "
+                "outside holes s | ms per 1k new vertices (line over the holes) | mesh MiB | fill's peak above the mesh MiB | "
+                "peak / input | peak / output | open edges |\n");
+    std::printf("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+    return 0;
+  }
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s MESH [--subdivide L] [--holes N] [--edges MIN,MAX] [--name NAME] [--write OUT.bin]\n", argv[0]);
     return 2;
@@ -351,9 +361,7 @@ int main(int argc, char** argv) {
   const double fill = field(line, "fill"), inHoles = field(line, "inHoles"), newVertices = field(line, "newVertices");
   const double mesh = field(line, "meshMiB"), output = field(line, "outputMiB");
   const double extra = field(line, "peakMiB") - field(line, "rssBeforeMiB");
-  // | mesh | vertices | holes cut / filled | border edges min–max (total) | new vertices | fill s |
-  // in holes s | outside holes s | ms per 1k new vertices (fit: a + b·n) | mesh MiB | fill's peak
-  // above the mesh MiB | peak / mesh | peak / output | open edges after
+  // The columns of --header.
   std::printf("| %s | %.0f | %.0f / %.0f | %.0f–%.0f (%.0f) | %.0f | %.1f | %.1f | %.2f | %.1f (%.0f ms + %.2f ms/1k) | %.0f | %.0f | %.2f× | %.2f× | %.0f |\n",
               name.c_str(), field(line, "vertices"), field(line, "holes"), field(line, "filled"),
               field(line, "minEdges"), field(line, "maxEdges"), field(line, "borderEdges"), newVertices, fill, inHoles,
