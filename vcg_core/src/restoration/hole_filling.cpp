@@ -283,6 +283,154 @@ void validate(const HoleFillOptions& opt) {
     throw InvalidInputError("fill: subdivision is not available when filling holes (it would split the original faces)");
 }
 
+// The fill proper, after the checks: welds rewire `output`'s faces in place (each face's value
+// before its first change goes to `weldedFaces`), patches are made aside and appended to `output`
+// at the end, once `index` (the faces around each vertex) is no longer needed.
+void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::vector<HoleHalfEdge> halfEdges,
+                 const HoleFillOptions& opt, std::chrono::steady_clock::time_point start, HoleFillReport& report,
+                 std::unordered_map<int, Face>& weldedFaces) {
+  VertexFaceIndex& adjacency = *index;
+  AppendedMesh mesh(output);
+  // What the patches need of the mesh as it was given, at each border vertex: the mean length of
+  // its edges (the density to match) and the angle its faces span (the border's corner bound).
+  struct BorderVertex {
+    double edgeLength, meshAngle;
+  };
+  std::unordered_map<int, BorderVertex> border;
+  for (const HoleHalfEdge& h : halfEdges)
+    for (int v : {h.from, h.to})
+      if (border.find(v) == border.end())
+        border.emplace(v, BorderVertex{borderEdgeLength(output, adjacency[v], v), cornerAngleSum(output, adjacency[v], v)});
+  auto edgeExists = [&](int a, int b) {
+    for (int f : adjacency[a]) {
+      const Face& t = mesh.face(f);
+      if (t[0] == b || t[1] == b || t[2] == b) return true;
+    }
+    return false;
+  };
+
+  std::vector<WeldRecord> welds;
+  std::vector<HoleLoop> loops;
+  for (const HoleLoop& found : findHoleLoops(std::move(halfEdges))) {
+    PinchSplit split = splitAtPinches(found, output.positions, [&](int kept, int removed) {
+      WeldRecord w{{kept, removed}, adjacency[removed].copy(), adjacency[kept].copy()};
+      for (const WeldRecord& earlier : welds)
+        if (earlier.weld.kept == kept) w.keptFaces = earlier.keptFaces;
+      for (int f : w.removedFaces) weldedFaces.emplace(f, output.faces[f]);
+      if (!weldCopies(mesh, adjacency, kept, removed)) return false;
+      welds.push_back(std::move(w));
+      return true;
+    });
+    for (HoleLoop& loop : split.loops) loops.push_back(std::move(loop));
+  }
+  // An island (a fragment inside a hole, bounded by its own loop) leaves both loops open: a disc
+  // across the hole would cross the island, and one across the island's loop would close the
+  // island onto itself. The report says so; the user removes the fragment (or keeps the hole).
+  std::vector<std::string> islandReason(loops.size());
+  const std::vector<int> islandOf = islandsInHoles(output, adjacency, loops);
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    if (islandOf[i] < 0) continue;
+    const HoleLoop& hole = loops[islandOf[i]];
+    islandReason[i] = "the border of an island of faces (a separate piece) inside a hole of " + std::to_string(hole.edgeCount()) +
+                      " border edges: left open with that hole";
+    if (islandReason[islandOf[i]].empty())
+      islandReason[islandOf[i]] = "an island of faces (a separate piece with a border of " + std::to_string(loops[i].edgeCount()) +
+                                  " edges) lies inside it, which a patch would cross: left open";
+  }
+  long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
+  for (const HoleLoop& loop : loops) {
+    const std::size_t l = static_cast<std::size_t>(&loop - loops.data());
+    const auto holeStart = std::chrono::steady_clock::now();
+    HoleReport hole;
+    hole.borderEdges = loop.edgeCount();
+    hole.borderBoundDegrees = borderCornerBoundDegrees(output.positions, loop, [&](int v) { return border.at(v).meshAngle; });
+    auto skip = [&](std::string why) {
+      hole.reason = std::move(why);
+      hole.seconds = seconds(holeStart);
+      report.holes.push_back(hole);
+    };
+    if (loop.edgeCount() > opt.maxHoleEdges) {
+      skip("larger than the limit of " + std::to_string(opt.maxHoleEdges) + " border edges");
+      continue;
+    }
+    if (loop.pinched) {
+      skip("its border touches itself at a vertex");
+      continue;
+    }
+    if (!islandReason[l].empty()) {
+      skip(islandReason[l]);
+      continue;
+    }
+    const auto triangles = triangulateHole(output.positions, loop, edgeExists);
+    if (!triangles) {
+      skip("no triangulation avoids the mesh's existing edges");
+      continue;
+    }
+    const int firstVertex = mesh.vertexCount(), firstFace = mesh.faceCount();
+    for (const Face& t : *triangles) {
+      mesh.faces.push_back(t);
+      for (int v : t) adjacency.edit(v).push_back(mesh.faceCount() - 1);
+    }
+    hole.filled = true;
+    if (opt.stopAfter != FillStage::Triangulation) {
+      // Work on the piece of the mesh around the hole, then write the patch back.
+      Submesh sub = extractSubmesh(mesh, adjacency, loop.vertices, kFlowRings);
+      const int subVertices = sub.mesh.vertexCount(), subFaces = sub.mesh.faceCount();
+      std::vector<std::uint8_t> patchFace(subFaces, 0);
+      for (int f = 0; f < subFaces; ++f) patchFace[f] = sub.face[f] >= firstFace;
+      std::vector<double> sigma(subVertices, 0);
+      const std::unordered_set<int> onLoop(loop.vertices.begin(), loop.vertices.end());
+      for (int i = 0; i < subVertices; ++i)
+        if (onLoop.count(sub.vertex[i])) sigma[i] = border.at(sub.vertex[i]).edgeLength;
+      restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)),
+                   hole);
+      flowSteps += hole.steps;
+
+      auto global = [&](int i) { return i < subVertices ? sub.vertex[i] : firstVertex + i - subVertices; };
+      for (int i = subVertices; i < sub.mesh.vertexCount(); ++i) mesh.positions.push_back(sub.mesh.positions[i]);
+      for (int f = 0; f < sub.mesh.faceCount(); ++f) {
+        if (!patchFace[f]) continue;
+        const Face& t = sub.mesh.faces[f];
+        const Face g{global(t[0]), global(t[1]), global(t[2])};
+        if (f < subFaces) mesh.face(sub.face[f]) = g;
+        else mesh.faces.push_back(g);
+      }
+      // The patch was rewired: renew the face lists of its border.
+      for (int v : loop.vertices) {
+        auto& faces = adjacency.edit(v);
+        faces.erase(std::remove_if(faces.begin(), faces.end(), [&](int f) { return f >= firstFace; }), faces.end());
+      }
+      for (int f = firstFace; f < mesh.faceCount(); ++f) {
+        for (int v : mesh.face(f)) adjacency.edit(v).push_back(f);
+      }
+    }
+    hole.newVertices = mesh.vertexCount() - firstVertex;
+    hole.newFaces = mesh.faceCount() - firstFace;
+    hole.minAngleDegrees = smallestAngleSince(mesh, firstFace);
+    hole.seconds = seconds(holeStart);
+    report.holes.push_back(hole);
+    if (hole.stop == StopReason::Cancelled) break;  // the caller's progress callback said stop
+  }
+
+  // The faces at each kept copy, for settling the welds; then the index goes before the mesh
+  // grows (so that it and the grown arrays are never held at once).
+  std::map<int, std::vector<int>> keptFaces;
+  for (const WeldRecord& w : welds) keptFaces.emplace(w.weld.kept, adjacency[w.weld.kept].copy());
+  index.reset();
+  border.clear();
+  // One array at a time, each grown once to its exact size.
+  output.positions.reserve(output.positions.size() + mesh.positions.size());
+  output.positions.insert(output.positions.end(), mesh.positions.begin(), mesh.positions.end());
+  std::vector<Vec3>().swap(mesh.positions);
+  output.faces.reserve(output.faces.size() + mesh.faces.size());
+  output.faces.insert(output.faces.end(), mesh.faces.begin(), mesh.faces.end());
+  std::vector<Face>().swap(mesh.faces);
+  // Settled per kept vertex, in the order the welds were made.
+  std::vector<WeldRecord> byKept = welds;
+  std::stable_sort(byKept.begin(), byKept.end(), [](const WeldRecord& a, const WeldRecord& b) { return a.weld.kept < b.weld.kept; });
+  report.welds = settleWelds(output, keptFaces, byKept);
+}
+
 }  // namespace
 
 int HoleFillReport::filledCount() const {
@@ -308,148 +456,9 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
     report.seconds = seconds(start);
     return report;
   }
-  VertexFaceIndex& adjacency = *index;
-  AppendedMesh mesh(output);
-  // What the patches need of the mesh as it was given, at each border vertex: the mean length of
-  // its edges (the density to match) and the angle its faces span (the border's corner bound).
-  struct BorderVertex {
-    double edgeLength, meshAngle;
-  };
-  std::unordered_map<int, BorderVertex> border;
-  for (const HoleHalfEdge& h : halfEdges)
-    for (int v : {h.from, h.to})
-      if (border.find(v) == border.end())
-        border.emplace(v, BorderVertex{borderEdgeLength(output, adjacency[v], v), cornerAngleSum(output, adjacency[v], v)});
-  auto edgeExists = [&](int a, int b) {
-    for (int f : adjacency[a]) {
-      const Face& t = mesh.face(f);
-      if (t[0] == b || t[1] == b || t[2] == b) return true;
-    }
-    return false;
-  };
-
-  std::vector<WeldRecord> welds;
   std::unordered_map<int, Face> weldedFaces;  // the input's faces that welds rewire, as they were
   try {
-    std::vector<HoleLoop> loops;
-    for (const HoleLoop& found : findHoleLoops(std::move(halfEdges))) {
-      PinchSplit split = splitAtPinches(found, output.positions, [&](int kept, int removed) {
-        WeldRecord w{{kept, removed}, adjacency[removed].copy(), adjacency[kept].copy()};
-        for (const WeldRecord& earlier : welds)
-          if (earlier.weld.kept == kept) w.keptFaces = earlier.keptFaces;
-        for (int f : w.removedFaces) weldedFaces.emplace(f, output.faces[f]);
-        if (!weldCopies(mesh, adjacency, kept, removed)) return false;
-        welds.push_back(std::move(w));
-        return true;
-      });
-      for (HoleLoop& loop : split.loops) loops.push_back(std::move(loop));
-    }
-    // An island (a fragment inside a hole, bounded by its own loop) leaves both loops open: a disc
-    // across the hole would cross the island, and one across the island's loop would close the
-    // island onto itself. The report says so; the user removes the fragment (or keeps the hole).
-    std::vector<std::string> islandReason(loops.size());
-    const std::vector<int> islandOf = islandsInHoles(output, adjacency, loops);
-    for (std::size_t i = 0; i < loops.size(); ++i) {
-      if (islandOf[i] < 0) continue;
-      const HoleLoop& hole = loops[islandOf[i]];
-      islandReason[i] = "the border of an island of faces (a separate piece) inside a hole of " + std::to_string(hole.edgeCount()) +
-                        " border edges: left open with that hole";
-      if (islandReason[islandOf[i]].empty())
-        islandReason[islandOf[i]] = "an island of faces (a separate piece with a border of " + std::to_string(loops[i].edgeCount()) +
-                                    " edges) lies inside it, which a patch would cross: left open";
-    }
-    long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
-    for (std::size_t l = 0; l < loops.size(); ++l) {
-      const HoleLoop& loop = loops[l];
-      const auto holeStart = std::chrono::steady_clock::now();
-      HoleReport hole;
-      hole.borderEdges = loop.edgeCount();
-      hole.borderBoundDegrees = borderCornerBoundDegrees(output.positions, loop, [&](int v) { return border.at(v).meshAngle; });
-      auto skip = [&](std::string why) {
-        hole.reason = std::move(why);
-        hole.seconds = seconds(holeStart);
-        report.holes.push_back(hole);
-      };
-      if (loop.edgeCount() > opt.maxHoleEdges) {
-        skip("larger than the limit of " + std::to_string(opt.maxHoleEdges) + " border edges");
-        continue;
-      }
-      if (loop.pinched) {
-        skip("its border touches itself at a vertex");
-        continue;
-      }
-      if (!islandReason[l].empty()) {
-        skip(islandReason[l]);
-        continue;
-      }
-      const auto triangles = triangulateHole(output.positions, loop, edgeExists);
-      if (!triangles) {
-        skip("no triangulation avoids the mesh's existing edges");
-        continue;
-      }
-      const int firstVertex = mesh.vertexCount(), firstFace = mesh.faceCount();
-      for (const Face& t : *triangles) {
-        mesh.faces.push_back(t);
-        for (int v : t) adjacency.edit(v).push_back(mesh.faceCount() - 1);
-      }
-      hole.filled = true;
-      if (opt.stopAfter != FillStage::Triangulation) {
-        // Work on the piece of the mesh around the hole, then write the patch back.
-        Submesh sub = extractSubmesh(mesh, adjacency, loop.vertices, kFlowRings);
-        const int subVertices = sub.mesh.vertexCount(), subFaces = sub.mesh.faceCount();
-        std::vector<std::uint8_t> patchFace(subFaces, 0);
-        for (int f = 0; f < subFaces; ++f) patchFace[f] = sub.face[f] >= firstFace;
-        std::vector<double> sigma(subVertices, 0);
-        const std::unordered_set<int> onLoop(loop.vertices.begin(), loop.vertices.end());
-        for (int i = 0; i < subVertices; ++i)
-          if (onLoop.count(sub.vertex[i])) sigma[i] = border.at(sub.vertex[i]).edgeLength;
-        restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)),
-                     hole);
-        flowSteps += hole.steps;
-
-        auto global = [&](int i) { return i < subVertices ? sub.vertex[i] : firstVertex + i - subVertices; };
-        for (int i = subVertices; i < sub.mesh.vertexCount(); ++i) mesh.positions.push_back(sub.mesh.positions[i]);
-        for (int f = 0; f < sub.mesh.faceCount(); ++f) {
-          if (!patchFace[f]) continue;
-          const Face& t = sub.mesh.faces[f];
-          const Face g{global(t[0]), global(t[1]), global(t[2])};
-          if (f < subFaces) mesh.face(sub.face[f]) = g;
-          else mesh.faces.push_back(g);
-        }
-        // The patch was rewired: renew the face lists of its border.
-        for (int v : loop.vertices) {
-          auto& faces = adjacency.edit(v);
-          faces.erase(std::remove_if(faces.begin(), faces.end(), [&](int f) { return f >= firstFace; }), faces.end());
-        }
-        for (int f = firstFace; f < mesh.faceCount(); ++f) {
-          for (int v : mesh.face(f)) adjacency.edit(v).push_back(f);
-        }
-      }
-      hole.newVertices = mesh.vertexCount() - firstVertex;
-      hole.newFaces = mesh.faceCount() - firstFace;
-      hole.minAngleDegrees = smallestAngleSince(mesh, firstFace);
-      hole.seconds = seconds(holeStart);
-      report.holes.push_back(hole);
-      if (hole.stop == StopReason::Cancelled) break;  // the caller's progress callback said stop
-    }
-
-    // The faces at each kept copy, for settling the welds; then the index goes before the mesh
-    // grows (so that it and the grown arrays are never held at once).
-    std::map<int, std::vector<int>> keptFaces;
-    for (const WeldRecord& w : welds) keptFaces.emplace(w.weld.kept, adjacency[w.weld.kept].copy());
-    index.reset();
-    border.clear();
-    // One array at a time, each grown once to its exact size.
-    output.positions.reserve(output.positions.size() + mesh.positions.size());
-    output.positions.insert(output.positions.end(), mesh.positions.begin(), mesh.positions.end());
-    std::vector<Vec3>().swap(mesh.positions);
-    output.faces.reserve(output.faces.size() + mesh.faces.size());
-    output.faces.insert(output.faces.end(), mesh.faces.begin(), mesh.faces.end());
-    std::vector<Face>().swap(mesh.faces);
-    // Settled per kept vertex, in the order the welds were made.
-    std::vector<WeldRecord> byKept = welds;
-    std::stable_sort(byKept.begin(), byKept.end(), [](const WeldRecord& a, const WeldRecord& b) { return a.weld.kept < b.weld.kept; });
-    report.welds = settleWelds(output, keptFaces, byKept);
+    fillInPlace(output, std::move(index), std::move(halfEdges), opt, start, report, weldedFaces);
   } catch (...) {
     // Back to the input: the appended elements go, and the welded faces get their copies back.
     output.positions.resize(originalVertices);
