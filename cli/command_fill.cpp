@@ -86,7 +86,10 @@ void runFill(FillArgs& a) {
   std::printf("%s: %d vertices, %d faces -> %d vertices, %d faces; %s filled, %d skipped, %.2f s\n", a.input.c_str(),
               inVertices, inFaces, mesh.vertexCount(), mesh.faceCount(), plural(report.filledCount(), "hole").c_str(),
               skipped, report.seconds);
-  std::printf("wrote %s (new faces selected and flagged by the face property elastica_new)\n", a.output.c_str());
+  if (report.holes.empty())
+    std::printf("the mesh has no holes: nothing to fill; wrote %s with the input's vertices and faces unchanged\n", a.output.c_str());
+  else
+    std::printf("wrote %s (new faces selected and flagged by the face property elastica_new)\n", a.output.c_str());
 
   if (!a.report.empty()) {
     nlohmann::json j = app::fillingReport(result, a.fill);

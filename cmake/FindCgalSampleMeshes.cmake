@@ -1,5 +1,5 @@
 # Locates the real sample meshes that scripts/setup.sh unpacks from Debian's libcgal-demo package
-# (elephant.off, elephant-with-holes.off) into its cache.
+# (elephant.off, elephant-with-holes.off, bunny00.off) into its cache.
 #
 # Input (cache variable, optional): CGAL_SAMPLE_MESH_DIR, a directory holding those files.
 # Default search: $ELASTICA_CACHE_DIR, then ${XDG_CACHE_HOME:-$HOME/.cache}/elastica, for the
@@ -23,4 +23,4 @@ endif()
 include(FindPackageHandleStandardArgs)
 find_package_handle_standard_args(CgalSampleMeshes
   REQUIRED_VARS CGAL_SAMPLE_MESH_DIR
-  FAIL_MESSAGE "sample meshes not found: run scripts/setup.sh (unpacks two meshes from Debian's libcgal-demo) or pass -DCGAL_SAMPLE_MESH_DIR=<dir with elephant.off and elephant-with-holes.off>")
+  FAIL_MESSAGE "sample meshes not found: run scripts/setup.sh (unpacks three meshes from Debian's libcgal-demo) or pass -DCGAL_SAMPLE_MESH_DIR=<dir with elephant.off, elephant-with-holes.off and bunny00.off>")

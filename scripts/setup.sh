@@ -5,7 +5,7 @@
 #   scripts/setup.sh --check    only report what is missing (exit 1 if anything is)
 #
 # 1. Binary packages (apt-get) that the build, the tests and the MeshLab plugin need.
-# 2. Two real sample meshes from Debian's libcgal-demo package (downloaded, not installed).
+# 2. Three real sample meshes from Debian's libcgal-demo package (downloaded, not installed).
 # 3. Debian's `meshlab` *source* package, the same version as the installed `meshlab` binary (so the
 #    plugin ABI matches), unpacked into a cache: it holds vcglib and MeshLab's plugin headers
 #    (src/common). And Debian 13 (trixie)'s `meshlab` source package (MeshLab 2022.02), for the
@@ -90,12 +90,15 @@ fi
 cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
 
 # ---------------------------------------------------------------- 2. real sample meshes
-# Two meshes from the data archive of Debian's libcgal-demo package (CGAL's own examples): an
-# elephant (2,775 vertices, genus 3) and the same elephant with 106 holes, whose borders pass
-# twice through some vertices. The restoration tests and benchmarks use them. `apt-get download`
+# Meshes from the data archive of Debian's libcgal-demo package (CGAL's own examples): an
+# elephant (2,775 vertices, genus 3), the same elephant with 106 holes, whose borders pass twice
+# through some vertices, and a closed scan of the Stanford bunny (bunny00.off, 37,706 vertices) for
+# the scanner-style holes (tests/scanner_holes_test.cpp) and the many-holes benchmark
+# (bench/scan_holes_bench). The restoration tests and benchmarks use them. `apt-get download`
 # fetches the package file without installing it (24 MB; no root needed once apt's lists exist).
+cgal_meshes=(elephant.off elephant-with-holes.off bunny00.off)
 fetch_cgal_meshes() {
-  local candidate dir work deb
+  local candidate dir work deb m complete=1
   candidate=$(apt-cache policy libcgal-demo 2>/dev/null | awk '/Candidate:/ {print $2}')
   if [[ -z "$candidate" || "$candidate" == "(none)" ]]; then
     ((check_only)) && { log "apt's package lists do not know libcgal-demo (run apt-get update)"; exit 1; }
@@ -104,19 +107,20 @@ fetch_cgal_meshes() {
   fi
   [[ -n "$candidate" && "$candidate" != "(none)" ]] || die "no libcgal-demo package in the configured Debian sources"
   dir="$cache/cgal-data-$candidate"
-  if [[ -f "$dir/.elastica-complete" ]]; then
+  for m in "${cgal_meshes[@]}"; do [[ -f "$dir/meshes/$m" ]] || complete=0; done
+  if [[ -f "$dir/.elastica-complete" ]] && ((complete)); then
     log "sample meshes ready: $dir"
     return
   fi
   ((check_only)) && { log "sample meshes not fetched yet ($dir)"; exit 1; }
   work=$(mktemp -d "$cache/cgal-work.XXXXXX")
-  log "fetching Debian's libcgal-demo $candidate for two sample meshes (about 24 MB)"
+  log "fetching Debian's libcgal-demo $candidate for ${#cgal_meshes[@]} sample meshes (about 24 MB)"
   (cd "$work" && apt-get -o APT::Sandbox::User="$(id -un)" download -qq "libcgal-demo=$candidate") || die "could not download libcgal-demo=$candidate"
   deb=$(ls "$work"/libcgal-demo_*.deb | head -n1)
   rm -rf "$dir" && mkdir -p "$dir"
   dpkg-deb --fsys-tarfile "$deb" | tar -xO ./usr/share/doc/libcgal-dev/data.tar.gz \
-    | tar -xz -C "$dir" --strip-components=1 data/meshes/elephant.off data/meshes/elephant-with-holes.off \
-    || die "libcgal-demo $candidate lacks data/meshes/elephant.off or elephant-with-holes.off"
+    | tar -xz -C "$dir" --strip-components=1 "${cgal_meshes[@]/#/data/meshes/}" \
+    || die "libcgal-demo $candidate lacks one of data/meshes/{$(IFS=,; echo "${cgal_meshes[*]}")}"
   rm -rf "$work"
   touch "$dir/.elastica-complete"
   log "sample meshes ready: $dir"

@@ -333,6 +333,21 @@ TEST(Cli, FillRestoresTheBunnyFlank) {
   EXPECT_NE(text.find("\"stop\": \"converged\""), std::string::npos) << text;
 }
 
+// A mesh without holes: `fill` says so and writes the mesh it read, the same vertices (bit for bit)
+// and faces in the same order.
+TEST(Cli, FillOnAClosedMeshWritesTheSameGeometry) {
+  ScratchDir dir("cli-fill-closed");
+  const std::string in = std::string(ELASTICA_DATA_DIR) + "/bunny.ply";
+  const CommandResult run = runElastica("fill " + in + " -o " + dir.file("r.ply"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("0 holes filled, 0 skipped"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("the mesh has no holes: nothing to fill"), std::string::npos) << run.output;
+  const io::MeshFile before = io::readMesh(in), after = io::readMesh(dir.file("r.ply"));
+  ASSERT_GT(before.mesh.faceCount(), 0);
+  EXPECT_EQ(after.mesh.positions, before.mesh.positions);
+  EXPECT_EQ(after.mesh.faces, before.mesh.faces);
+}
+
 TEST(Cli, FillSkipsHolesAboveTheLimit) {
   ScratchDir dir("cli-fill-limit");
   const std::string in = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";

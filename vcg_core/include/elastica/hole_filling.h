@@ -119,7 +119,17 @@ struct HoleFillReport {
 /// twice through one point (two copies of a vertex, one per fan of faces) is split there into two
 /// holes, and the copies become one vertex where a patch joins their fans
 /// (HoleFillReport::welds). A mesh without holes is left as it is. A hole whose flow fails keeps
-/// its bi-Laplace patch; its report says so.
+/// its bi-Laplace patch; its report says so. A hole with an island in it (a separate piece of the
+/// mesh whose only border lies within the hole's outline, as scanners leave fragments in gaps) is
+/// left open, and so is the island's border: a disc patch would cross the island, and one over the
+/// island's border would close the island onto itself. Both reports say so; remove the fragment to
+/// fill the hole.
+///
+/// Cost: the mesh is never copied. One pass over the faces finds the holes with a vertex→faces
+/// index of a third of the mesh's bytes; each patch is made on a piece of the mesh around its hole,
+/// and the patches are appended at the end, so the time beyond that pass and the memory beyond the
+/// mesh follow the holes (200 holes in a 2.2-million-vertex scan: the fill's peak 1.9× the mesh's
+/// bytes, 0.4 s outside the holes; bench/scan_holes_bench).
 /// @throws InvalidInputError on non-manifold edges or invalid options; the mesh is then unchanged.
 HoleFillReport fillHoles(TriMesh& mesh, const HoleFillOptions& opt = {});
 

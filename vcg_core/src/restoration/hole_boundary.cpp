@@ -1,28 +1,35 @@
 #include "restoration/hole_boundary.h"
 
+#include <elastica/errors.h>
+
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
+#include <unordered_set>
 
 namespace elastica {
 
 std::vector<HoleLoop> findHoleLoops(const Topology& topo) {
   // Hole half-edges: for a boundary edge a → b in its face (a, b, c), the hole runs b → a.
-  struct HoleEdge {
-    int from, to, outside;
-  };
-  std::vector<HoleEdge> edges;
+  std::vector<HoleHalfEdge> edges;
   for (int e = 0; e < topo.edgeCount(); ++e) {
     if (!topo.isBoundaryEdge(e)) continue;
     const int c = topo.edgeOppositeCorners(e)[0], f = c / 3, k = c % 3;
     const Face& t = topo.faces()[f];
     edges.push_back({t[(k + 2) % 3], t[(k + 1) % 3], t[k]});
   }
+  return findHoleLoops(std::move(edges));
+}
+
+std::vector<HoleLoop> findHoleLoops(std::vector<HoleHalfEdge> edges) {
   std::sort(edges.begin(), edges.end(),
-            [](const HoleEdge& x, const HoleEdge& y) { return x.from != y.from ? x.from < y.from : x.to < y.to; });
-  // Outgoing hole edges of each vertex: [first[v], first[v + 1]) in `edges`.
-  std::vector<int> first(topo.vertexCount() + 1, 0);
-  for (const HoleEdge& h : edges) ++first[h.from + 1];
-  for (int v = 0; v < topo.vertexCount(); ++v) first[v + 1] += first[v];
+            [](const HoleHalfEdge& x, const HoleHalfEdge& y) { return x.from != y.from ? x.from < y.from : x.to < y.to; });
+  // Outgoing hole edges of vertex v: the run of `edges` from `from` = v on.
+  auto firstFrom = [&](int v) {
+    return static_cast<std::size_t>(
+        std::lower_bound(edges.begin(), edges.end(), v, [](const HoleHalfEdge& h, int x) { return h.from < x; }) - edges.begin());
+  };
 
   std::vector<char> used(edges.size(), 0);
   std::vector<HoleLoop> loops;
@@ -38,9 +45,9 @@ std::vector<HoleLoop> findHoleLoops(const Topology& topo) {
       if (v == edges[start].from) break;
       // At a vertex with several outgoing hole edges (a pinch), take the first unused one.
       std::size_t next = edges.size();
-      for (int k = first[v]; k < first[v + 1]; ++k) {
+      for (std::size_t k = firstFrom(v); k < edges.size() && edges[k].from == v; ++k) {
         if (!used[k]) {
-          next = static_cast<std::size_t>(k);
+          next = k;
           break;
         }
       }
@@ -55,26 +62,163 @@ std::vector<HoleLoop> findHoleLoops(const Topology& topo) {
   return loops;
 }
 
+void checkFaceIndices(const TriMesh& mesh) {
+  const int nv = mesh.vertexCount();
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      if (t[k] < 0 || t[k] >= nv) {
+        throw InvalidInputError("fill: face " + std::to_string(f) + " references vertex " + std::to_string(t[k]) +
+                                ", outside [0, " + std::to_string(nv) + ")");
+      }
+    }
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+      throw InvalidInputError("fill: face " + std::to_string(f) + " repeats vertex " + std::to_string(t[0] == t[1] || t[0] == t[2] ? t[0] : t[1]));
+  }
+}
+
+std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFaceIndex& adjacency) {
+  std::vector<HoleHalfEdge> edges;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      // Edge a → b of face f: the faces around a that also use b share it.
+      const int a = t[k], b = t[(k + 1) % 3];
+      int shared = 0;
+      for (int g : adjacency[a]) {
+        const Face& s = mesh.faces[g];
+        shared += s[0] == b || s[1] == b || s[2] == b;
+      }
+      if (shared > 2) {
+        throw InvalidInputError("fill: non-manifold edge between vertices " + std::to_string(std::min(a, b)) + " and " +
+                                std::to_string(std::max(a, b)) + " (shared by " + std::to_string(shared) + " faces)");
+      }
+      if (shared == 1) edges.push_back({b, a, t[(k + 2) % 3]});  // the hole runs against the face
+    }
+  }
+  return edges;
+}
+
 namespace {
+
 double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
+
+// A loop's outline: centroid, unit mean normal (Newell's), radius (farthest vertex from the
+// centroid) and bounding box.
+struct Outline {
+  Vec3 centroid = Vec3::Zero(), normal = Vec3::Zero(), lo, hi;
+  double radius = 0;
+};
+
+Outline outlineOf(const std::vector<Vec3>& positions, const HoleLoop& loop) {
+  Outline o;
+  const int n = loop.edgeCount();
+  o.lo = o.hi = positions[loop.vertices[0]];
+  for (int v : loop.vertices) {
+    o.centroid += positions[v];
+    o.lo = o.lo.cwiseMin(positions[v]);
+    o.hi = o.hi.cwiseMax(positions[v]);
+  }
+  o.centroid /= n;
+  for (int i = 0; i < n; ++i)
+    o.normal += (positions[loop.vertices[i]] - o.centroid).cross(positions[loop.vertices[(i + 1) % n]] - o.centroid);
+  if (o.normal.norm() > 0) o.normal.normalize();
+  for (int v : loop.vertices) o.radius = std::max(o.radius, (positions[v] - o.centroid).norm());
+  return o;
+}
+
+// The winding number of `outer`'s loop around point p, seen along the outline's normal.
+double windingAround(const std::vector<Vec3>& positions, const HoleLoop& outer, const Outline& o, const Vec3& p) {
+  const Vec3 u = o.normal.unitOrthogonal(), w = o.normal.cross(u);
+  double turn = 0;
+  const int n = outer.edgeCount();
+  for (int i = 0; i < n; ++i) {
+    const Vec3 a = positions[outer.vertices[i]] - p, b = positions[outer.vertices[(i + 1) % n]] - p;
+    turn += std::atan2(a.dot(u) * b.dot(w) - a.dot(w) * b.dot(u), a.dot(u) * b.dot(u) + a.dot(w) * b.dot(w));
+  }
+  return turn / (2 * std::acos(-1.0));
+}
+
+// The vertices of the piece of the mesh that holds `seed`, or nothing if it has more than `limit`
+// faces.
+std::optional<std::unordered_set<int>> pieceOf(const TriMesh& mesh, const VertexFaceIndex& adjacency, int seed, std::size_t limit) {
+  std::unordered_set<int> vertices{seed}, faces;
+  std::vector<int> stack{seed};
+  while (!stack.empty()) {
+    const int v = stack.back();
+    stack.pop_back();
+    for (int f : adjacency[v]) {
+      if (!faces.insert(f).second) continue;
+      if (faces.size() > limit) return std::nullopt;
+      for (int x : mesh.faces[f])
+        if (vertices.insert(x).second) stack.push_back(x);
+    }
+  }
+  return vertices;
+}
+
 }  // namespace
 
-double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const Topology& topo, const HoleLoop& loop) {
+std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<HoleLoop>& loops) {
+  const int n = static_cast<int>(loops.size());
+  std::vector<int> holeOf(n, -1);
+  if (n < 2) return holeOf;
+  std::vector<Outline> outlines;
+  for (const HoleLoop& loop : loops) outlines.push_back(outlineOf(mesh.positions, loop));
+  for (int i = 0; i < n; ++i) {
+    const Outline& island = outlines[i];
+    for (int j = 0; j < n && holeOf[i] < 0; ++j) {
+      const Outline& hole = outlines[j];
+      if (j == i || hole.radius <= island.radius) continue;
+      // Inside the hole's box (grown by its radius), near its mean plane, within its outline.
+      if ((island.lo - hole.lo).minCoeff() < -hole.radius || (hole.hi - island.hi).minCoeff() < -hole.radius) continue;
+      if (std::abs((island.centroid - hole.centroid).dot(hole.normal)) > hole.radius) continue;
+      if (std::abs(windingAround(mesh.positions, loops[j], hole, island.centroid)) < 0.5) continue;
+      // A separate piece, no larger than a disc of the hole's size could hold, with no other border.
+      const std::size_t limit = 4 * static_cast<std::size_t>(loops[j].edgeCount()) * loops[j].edgeCount() + 64;
+      const auto piece = pieceOf(mesh, adjacency, loops[i].vertices[0], limit);
+      if (!piece || piece->count(loops[j].vertices[0])) continue;
+      bool onlyBorder = true;
+      for (int k = 0; k < n && onlyBorder; ++k)
+        if (k != i && piece->count(loops[k].vertices[0])) onlyBorder = false;
+      if (onlyBorder) holeOf[i] = j;
+    }
+  }
+  return holeOf;
+}
+
+double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v) {
+  double sum = 0;
+  for (int f : faces) {
+    const Face& t = mesh.faces[f];
+    const int j = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    sum += angleBetween(mesh.positions[t[(j + 1) % 3]] - mesh.positions[v], mesh.positions[t[(j + 2) % 3]] - mesh.positions[v]);
+  }
+  return sum;
+}
+
+double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLoop& loop, const std::function<double(int)>& meshAngle) {
   const double pi = std::acos(-1.0);
   double bound = pi;
   const int n = loop.edgeCount();
   for (int i = 0; i < n; ++i) {
     const int v = loop.vertices[i], u = loop.vertices[(i + n - 1) % n], w = loop.vertices[(i + 1) % n];
+    if (2 * pi - meshAngle(v) >= pi) continue;  // a reflex corner of the hole: a patch fans it out
+    bound = std::min(bound, angleBetween(positions[u] - positions[v], positions[w] - positions[v]));
+  }
+  return bound * 180 / pi;
+}
+
+double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const Topology& topo, const HoleLoop& loop) {
+  return borderCornerBoundDegrees(positions, loop, [&](int v) {
     double meshAngle = 0;  // what the mesh's own faces span at v
     for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) {
       const int c = topo.corner(k), f = c / 3, j = c % 3;
       const Face& t = topo.faces()[f];
       meshAngle += angleBetween(positions[t[(j + 1) % 3]] - positions[v], positions[t[(j + 2) % 3]] - positions[v]);
     }
-    if (2 * pi - meshAngle >= pi) continue;  // a reflex corner of the hole: a patch fans it out
-    bound = std::min(bound, angleBetween(positions[u] - positions[v], positions[w] - positions[v]));
-  }
-  return bound * 180 / pi;
+    return meshAngle;
+  });
 }
 
 }  // namespace elastica

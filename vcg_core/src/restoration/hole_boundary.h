@@ -3,7 +3,9 @@
 #pragma once
 
 #include <elastica/topology.h>
+#include "restoration/submesh.h"
 
+#include <functional>
 #include <vector>
 
 namespace elastica {
@@ -20,13 +22,46 @@ struct HoleLoop {
   int edgeCount() const { return static_cast<int>(vertices.size()); }
 };
 
+/// One edge of a hole, in the hole's direction: the mesh face on it is (to, from, outside).
+struct HoleHalfEdge {
+  int from, to, outside;
+};
+
 /// All boundary loops of a mesh, each starting at its smallest boundary half-edge (deterministic).
 std::vector<HoleLoop> findHoleLoops(const Topology& topo);
+/// The same from the mesh's boundary half-edges alone (in any order): time and memory in
+/// proportion to the holes' borders.
+std::vector<HoleLoop> findHoleLoops(std::vector<HoleHalfEdge> edges);
+
+/// The boundary half-edges of `mesh`, whose faces around each vertex `adjacency` lists, in one pass
+/// over the faces and without arrays of the mesh's size (a whole-mesh Topology of a scan of
+/// millions of vertices takes several times the mesh's memory).
+/// @throws InvalidInputError on an edge shared by more than two faces (the message names it).
+std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFaceIndex& adjacency);
+
+/// @throws InvalidInputError if a face of `mesh` uses a vertex outside [0, vertexCount()) or
+///         repeats a vertex (the message names the face): what boundaryHalfEdges needs.
+void checkFaceIndices(const TriMesh& mesh);
+
+/// Islands: for each loop, the index of the loop in whose hole it lies as the border of an island
+/// (a separate piece of the mesh whose only border it is, as a scanner leaves a fragment floating in
+/// a gap: inside the hole's outline seen along the hole's mean normal, and nearer the hole than the
+/// hole is wide), or -1. A disc patch across such a hole would cross the island, and one across
+/// the island's own border would close the island onto itself. Costs in proportion to the loops
+/// and to the islands' faces.
+std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<HoleLoop>& loops);
+
+/// The angle, in radians, that `faces` (the faces around `v`, in `mesh`) span at `v`: the sum of
+/// their corner angles there.
+double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v);
 
 /// The smallest angle any patch of `loop` can have, in degrees, as far as its border decides: the
 /// smallest angle between two consecutive border edges at a corner that the hole's side sees as
 /// convex (the mesh's own faces there span more than 180°). A patch face holding that corner has
 /// at most that angle; a fan of several faces there only splits it. 180 when no corner is convex.
+/// `meshAngle(v)`: the angle the mesh's own faces span at v, in radians (cornerAngleSum).
+double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLoop& loop,
+                                const std::function<double(int)>& meshAngle);
 double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const Topology& topo, const HoleLoop& loop);
 
 }  // namespace elastica

@@ -1,7 +1,6 @@
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
 #include <elastica/mesh_quality.h>
-#include <elastica/topology.h>
 #include "flow/fair_masked.h"
 #include "mesh/self_intersection.h"
 #include "restoration/biharmonic_embedding.h"
@@ -18,7 +17,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <numeric>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace elastica {
 namespace {
@@ -51,15 +54,18 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-// Mean length of the mesh edges at each loop vertex: the density the patch must match.
-std::vector<double> borderEdgeLengths(const TriMesh& mesh, const Topology& topo, const HoleLoop& loop) {
-  std::vector<double> sigma;
-  for (int v : loop.vertices) {
-    double sum = 0;
-    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) sum += (mesh.positions[topo.ringVertex(k)] - mesh.positions[v]).norm();
-    sigma.push_back(sum / std::max(topo.valence(v), 1));
-  }
-  return sigma;
+// Mean length of the mesh edges at `v` (whose faces are `faces`): the density a patch must match
+// there. Summed over the neighbours in increasing order, as a Topology's one-ring lists them.
+double borderEdgeLength(const TriMesh& mesh, VertexFaceIndex::Range faces, int v) {
+  std::vector<int> ring;
+  for (int f : faces)
+    for (int x : mesh.faces[f])
+      if (x != v) ring.push_back(x);
+  std::sort(ring.begin(), ring.end());
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  double sum = 0;
+  for (int x : ring) sum += (mesh.positions[x] - mesh.positions[v]).norm();
+  return sum / std::max(static_cast<int>(ring.size()), 1);
 }
 
 // The flow's step and time limits hold for the whole fill: each hole's flow gets what the work
@@ -255,27 +261,29 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
 
 // Welds `removed` into `kept` (two copies of one point on a hole border) unless an edge would then
 // have more than two faces. `adjacency` follows.
-bool weldCopies(TriMesh& mesh, VertexFaces& adjacency, int kept, int removed) {
+bool weldCopies(AppendedMesh& mesh, VertexFaceIndex& adjacency, int kept, int removed) {
   auto facesOnEdge = [&](int a, int b) {
     int count = 0;
     for (int f : adjacency[a]) {
-      const Face& t = mesh.faces[f];
+      const Face& t = mesh.face(f);
       count += t[0] == b || t[1] == b || t[2] == b;
     }
     return count;
   };
   for (int f : adjacency[removed]) {
-    for (int x : mesh.faces[f]) {
+    for (int x : mesh.face(f)) {
       if (x == removed) continue;
       if (x == kept) return false;  // an edge between the copies: a face would lose its area
       if (facesOnEdge(kept, x) + facesOnEdge(removed, x) > 2) return false;
     }
   }
-  for (int f : adjacency[removed]) {
-    for (int& x : mesh.faces[f]) x = x == removed ? kept : x;
-    adjacency[kept].push_back(f);
+  const std::vector<int> moved = adjacency[removed].copy();
+  std::vector<int>& keptFaces = adjacency.edit(kept);
+  for (int f : moved) {
+    for (int& x : mesh.face(f)) x = x == removed ? kept : x;
+    keptFaces.push_back(f);
   }
-  adjacency[removed].clear();
+  adjacency.edit(removed).clear();
   return true;
 }
 
@@ -318,10 +326,12 @@ struct WeldRecord {
   std::vector<int> removedFaces, keptFaces;
 };
 
-// After filling: where the patches did not join a copy's fan to the kept vertex's own faces (its
-// holes stayed open), that fan gets its copy back. The copies still unused are then dropped (later
-// vertices move down). Returns the welds that stand.
-std::vector<PinchWeld> settleWelds(TriMesh& mesh, VertexFaces& adjacency, const std::vector<WeldRecord>& welds) {
+// After filling (`mesh` holds the patches; `facesAt` lists the faces at each kept vertex): where
+// the patches did not join a copy's fan to the kept vertex's own faces (its holes stayed open),
+// that fan gets its copy back. The copies still unused are then dropped (later vertices move down).
+// Returns the welds that stand. Allocates everything before it renumbers: once it has begun to
+// move vertices, it cannot throw.
+std::vector<PinchWeld> settleWelds(TriMesh& mesh, const std::map<int, std::vector<int>>& facesAt, const std::vector<WeldRecord>& welds) {
   std::vector<PinchWeld> standing;
   std::vector<std::vector<int>> fans;
   int fansOf = -1;
@@ -329,7 +339,7 @@ std::vector<PinchWeld> settleWelds(TriMesh& mesh, VertexFaces& adjacency, const 
   for (const WeldRecord& w : welds) {
     const int p = w.weld.kept, q = w.weld.removed;
     if (fansOf != p) {
-      fans = fansAround(mesh, adjacency[p], p);
+      fans = fansAround(mesh, facesAt.at(p), p);
       fansOf = p;
       fanTaken.assign(fans.size(), 0);
     }
@@ -345,11 +355,10 @@ std::vector<PinchWeld> settleWelds(TriMesh& mesh, VertexFaces& adjacency, const 
       continue;
     }
     fanTaken[fan] = 1;
-    for (int f : fans[fan]) {
+    for (int f : fans[fan])
       for (int& x : mesh.faces[f]) x = x == p ? q : x;
-      adjacency[q].push_back(f);
-    }
   }
+  if (standing.empty()) return standing;
   std::vector<char> drop(mesh.positions.size(), 0);
   for (const PinchWeld& w : standing) drop[w.removed] = 1;
   std::vector<int> newIndex(mesh.positions.size(), -1);
@@ -365,6 +374,23 @@ std::vector<PinchWeld> settleWelds(TriMesh& mesh, VertexFaces& adjacency, const 
   return standing;
 }
 
+// The smallest angle of the faces from `firstFace` on.
+double smallestAngleSince(const AppendedMesh& mesh, int firstFace) {
+  TriMesh piece;
+  std::unordered_map<int, int> local;
+  for (int f = firstFace; f < mesh.faceCount(); ++f) {
+    Face t;
+    for (int k = 0; k < 3; ++k) {
+      const int v = mesh.face(f)[k];
+      const auto [at, added] = local.emplace(v, piece.vertexCount());
+      if (added) piece.positions.push_back(mesh.position(v));
+      t[k] = at->second;
+    }
+    piece.faces.push_back(t);
+  }
+  return smallestAngleDegrees(piece);
+}
+
 void validate(const HoleFillOptions& opt) {
   if (opt.maxHoleEdges < 3) throw InvalidInputError("fill: the largest hole to fill must have at least 3 border edges");
   if (!(opt.refinement.density > 0)) throw InvalidInputError("fill: the refinement density must be > 0");
@@ -372,49 +398,67 @@ void validate(const HoleFillOptions& opt) {
     throw InvalidInputError("fill: subdivision is not available when filling holes (it would split the original faces)");
 }
 
-}  // namespace
-
-int HoleFillReport::filledCount() const {
-  return static_cast<int>(std::count_if(holes.begin(), holes.end(), [](const HoleReport& h) { return h.filled; }));
-}
-
-HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
-  validate(opt);
-  TriMesh mesh = output;  // the input stays as it was if anything throws
-  const auto start = std::chrono::steady_clock::now();
-  const Topology topo(mesh.vertexCount(), mesh.faces);  // throws on non-manifold edges
-  const int originalFaces = mesh.faceCount();
-  VertexFaces adjacency = vertexFaces(mesh);
+// The fill proper, after the checks: welds rewire `output`'s faces in place (each face's value
+// before its first change goes to `weldedFaces`), patches are made aside and appended to `output`
+// at the end, once `index` (the faces around each vertex) is no longer needed.
+void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::vector<HoleHalfEdge> halfEdges,
+                 const HoleFillOptions& opt, std::chrono::steady_clock::time_point start, HoleFillReport& report,
+                 std::unordered_map<int, Face>& weldedFaces) {
+  VertexFaceIndex& adjacency = *index;
+  AppendedMesh mesh(output);
+  // What the patches need of the mesh as it was given, at each border vertex: the mean length of
+  // its edges (the density to match) and the angle its faces span (the border's corner bound).
+  struct BorderVertex {
+    double edgeLength, meshAngle;
+  };
+  std::unordered_map<int, BorderVertex> border;
+  for (const HoleHalfEdge& h : halfEdges)
+    for (int v : {h.from, h.to})
+      if (border.find(v) == border.end())
+        border.emplace(v, BorderVertex{borderEdgeLength(output, adjacency[v], v), cornerAngleSum(output, adjacency[v], v)});
   auto edgeExists = [&](int a, int b) {
     for (int f : adjacency[a]) {
-      const Face& t = mesh.faces[f];
+      const Face& t = mesh.face(f);
       if (t[0] == b || t[1] == b || t[2] == b) return true;
     }
     return false;
   };
 
-  HoleFillReport report;
   std::vector<WeldRecord> welds;
   std::vector<HoleLoop> loops;
-  for (const HoleLoop& found : findHoleLoops(topo)) {
-    PinchSplit split = splitAtPinches(found, mesh.positions, [&](int kept, int removed) {
-      WeldRecord w{{kept, removed}, adjacency[removed], adjacency[kept]};
+  for (const HoleLoop& found : findHoleLoops(std::move(halfEdges))) {
+    PinchSplit split = splitAtPinches(found, output.positions, [&](int kept, int removed) {
+      WeldRecord w{{kept, removed}, adjacency[removed].copy(), adjacency[kept].copy()};
       for (const WeldRecord& earlier : welds)
         if (earlier.weld.kept == kept) w.keptFaces = earlier.keptFaces;
+      for (int f : w.removedFaces) weldedFaces.emplace(f, output.faces[f]);
       if (!weldCopies(mesh, adjacency, kept, removed)) return false;
       welds.push_back(std::move(w));
       return true;
     });
     for (HoleLoop& loop : split.loops) loops.push_back(std::move(loop));
   }
-  // Settled per kept vertex, in the order the welds were made.
-  std::stable_sort(welds.begin(), welds.end(), [](const WeldRecord& a, const WeldRecord& b) { return a.weld.kept < b.weld.kept; });
+  // An island (a fragment inside a hole, bounded by its own loop) leaves both loops open: a disc
+  // across the hole would cross the island, and one across the island's loop would close the
+  // island onto itself. The report says so; the user removes the fragment (or keeps the hole).
+  std::vector<std::string> islandReason(loops.size());
+  const std::vector<int> islandOf = islandsInHoles(output, adjacency, loops);
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    if (islandOf[i] < 0) continue;
+    const HoleLoop& hole = loops[islandOf[i]];
+    islandReason[i] = "the border of an island of faces (a separate piece) inside a hole of " + std::to_string(hole.edgeCount()) +
+                      " border edges: left open with that hole";
+    if (islandReason[islandOf[i]].empty())
+      islandReason[islandOf[i]] = "an island of faces (a separate piece with a border of " + std::to_string(loops[i].edgeCount()) +
+                                  " edges) lies inside it, which a patch would cross: left open";
+  }
   long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
   for (const HoleLoop& loop : loops) {
+    const std::size_t l = static_cast<std::size_t>(&loop - loops.data());
     const auto holeStart = std::chrono::steady_clock::now();
     HoleReport hole;
     hole.borderEdges = loop.edgeCount();
-    hole.borderBoundDegrees = borderCornerBoundDegrees(mesh.positions, topo, loop);
+    hole.borderBoundDegrees = borderCornerBoundDegrees(output.positions, loop, [&](int v) { return border.at(v).meshAngle; });
     auto skip = [&](std::string why) {
       hole.reason = std::move(why);
       hole.seconds = seconds(holeStart);
@@ -428,7 +472,11 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
       skip("its border touches itself at a vertex");
       continue;
     }
-    const auto triangles = triangulateHole(mesh.positions, loop, edgeExists);
+    if (!islandReason[l].empty()) {
+      skip(islandReason[l]);
+      continue;
+    }
+    const auto triangles = triangulateHole(output.positions, loop, edgeExists);
     if (!triangles) {
       skip("no triangulation avoids the mesh's existing edges");
       continue;
@@ -436,7 +484,7 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
     const int firstVertex = mesh.vertexCount(), firstFace = mesh.faceCount();
     for (const Face& t : *triangles) {
       mesh.faces.push_back(t);
-      for (int v : t) adjacency[v].push_back(mesh.faceCount() - 1);
+      for (int v : t) adjacency.edit(v).push_back(mesh.faceCount() - 1);
     }
     hole.filled = true;
     if (opt.stopAfter != FillStage::Triangulation) {
@@ -446,44 +494,93 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
       std::vector<std::uint8_t> patchFace(subFaces, 0);
       for (int f = 0; f < subFaces; ++f) patchFace[f] = sub.face[f] >= firstFace;
       std::vector<double> sigma(subVertices, 0);
-      const std::vector<double> borderSigma = borderEdgeLengths(mesh, topo, loop);
-      for (int i = 0; i < subVertices; ++i) {
-        const auto at = std::find(loop.vertices.begin(), loop.vertices.end(), sub.vertex[i]);
-        if (at != loop.vertices.end()) sigma[i] = borderSigma[at - loop.vertices.begin()];
-      }
+      const std::unordered_set<int> onLoop(loop.vertices.begin(), loop.vertices.end());
+      for (int i = 0; i < subVertices; ++i)
+        if (onLoop.count(sub.vertex[i])) sigma[i] = border.at(sub.vertex[i]).edgeLength;
       restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)),
                    hole);
       flowSteps += hole.steps;
 
       auto global = [&](int i) { return i < subVertices ? sub.vertex[i] : firstVertex + i - subVertices; };
       for (int i = subVertices; i < sub.mesh.vertexCount(); ++i) mesh.positions.push_back(sub.mesh.positions[i]);
-      adjacency.resize(mesh.positions.size());
       for (int f = 0; f < sub.mesh.faceCount(); ++f) {
         if (!patchFace[f]) continue;
         const Face& t = sub.mesh.faces[f];
         const Face g{global(t[0]), global(t[1]), global(t[2])};
-        if (f < subFaces) mesh.faces[sub.face[f]] = g;
+        if (f < subFaces) mesh.face(sub.face[f]) = g;
         else mesh.faces.push_back(g);
       }
       // The patch was rewired: renew the face lists of its border.
       for (int v : loop.vertices) {
-        auto& faces = adjacency[v];
+        auto& faces = adjacency.edit(v);
         faces.erase(std::remove_if(faces.begin(), faces.end(), [&](int f) { return f >= firstFace; }), faces.end());
       }
       for (int f = firstFace; f < mesh.faceCount(); ++f) {
-        for (int v : mesh.faces[f]) adjacency[v].push_back(f);
+        for (int v : mesh.face(f)) adjacency.edit(v).push_back(f);
       }
     }
     hole.newVertices = mesh.vertexCount() - firstVertex;
     hole.newFaces = mesh.faceCount() - firstFace;
-    hole.minAngleDegrees = smallestAngleDegrees(mesh, firstFace);
+    hole.minAngleDegrees = smallestAngleSince(mesh, firstFace);
     hole.seconds = seconds(holeStart);
     report.holes.push_back(hole);
     if (hole.stop == StopReason::Cancelled) break;  // the caller's progress callback said stop
   }
-  report.welds = settleWelds(mesh, adjacency, welds);
+
+  // The faces at each kept copy, for settling the welds; then the index goes before the mesh
+  // grows (so that it and the grown arrays are never held at once).
+  std::map<int, std::vector<int>> keptFaces;
+  for (const WeldRecord& w : welds) keptFaces.emplace(w.weld.kept, adjacency[w.weld.kept].copy());
+  index.reset();
+  border.clear();
+  // One array at a time, each grown once to its exact size.
+  output.positions.reserve(output.positions.size() + mesh.positions.size());
+  output.positions.insert(output.positions.end(), mesh.positions.begin(), mesh.positions.end());
+  std::vector<Vec3>().swap(mesh.positions);
+  output.faces.reserve(output.faces.size() + mesh.faces.size());
+  output.faces.insert(output.faces.end(), mesh.faces.begin(), mesh.faces.end());
+  std::vector<Face>().swap(mesh.faces);
+  // Settled per kept vertex, in the order the welds were made.
+  std::vector<WeldRecord> byKept = welds;
+  std::stable_sort(byKept.begin(), byKept.end(), [](const WeldRecord& a, const WeldRecord& b) { return a.weld.kept < b.weld.kept; });
+  report.welds = settleWelds(output, keptFaces, byKept);
+}
+
+}  // namespace
+
+int HoleFillReport::filledCount() const {
+  return static_cast<int>(std::count_if(holes.begin(), holes.end(), [](const HoleReport& h) { return h.filled; }));
+}
+
+HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
+  validate(opt);
+  const auto start = std::chrono::steady_clock::now();
+  // The mesh is not copied: a scan of millions of vertices would be held twice, and a whole-mesh
+  // Topology takes several times its memory. One pass over the faces finds the hole borders (and
+  // refuses non-manifold edges) with a vertex→faces index of a third of the mesh's bytes; each
+  // patch is made on a submesh around its hole and kept aside, and all of them are appended to
+  // `output` at the end. The welds rewire faces of `output` in place and are undone if anything
+  // throws, so the input is then as it was.
+  checkFaceIndices(output);
+  const int originalVertices = output.vertexCount(), originalFaces = output.faceCount();
+  HoleFillReport report;
   report.firstNewFace = originalFaces;
-  output = std::move(mesh);
+  auto index = std::make_unique<VertexFaceIndex>(output);
+  std::vector<HoleHalfEdge> halfEdges = boundaryHalfEdges(output, *index);
+  if (halfEdges.empty()) {
+    report.seconds = seconds(start);
+    return report;
+  }
+  std::unordered_map<int, Face> weldedFaces;  // the input's faces that welds rewire, as they were
+  try {
+    fillInPlace(output, std::move(index), std::move(halfEdges), opt, start, report, weldedFaces);
+  } catch (...) {
+    // Back to the input: the appended elements go, and the welded faces get their copies back.
+    output.positions.resize(originalVertices);
+    output.faces.resize(originalFaces);
+    for (const auto& [f, t] : weldedFaces) output.faces[f] = t;
+    throw;
+  }
   report.seconds = seconds(start);
   return report;
 }

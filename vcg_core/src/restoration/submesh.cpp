@@ -1,6 +1,8 @@
 #include "restoration/submesh.h"
 
 #include <algorithm>
+#include <numeric>
+#include <unordered_set>
 
 namespace elastica {
 
@@ -17,23 +19,65 @@ VertexFaces vertexFaces(const TriMesh& mesh) {
   return vf;
 }
 
-Submesh extractSubmesh(const TriMesh& mesh, const VertexFaces& adjacency, const std::vector<int>& seeds, int rings) {
-  std::vector<char> inVertex(mesh.positions.size(), 0), inFace(mesh.faces.size(), 0);
+VertexFaceIndex::VertexFaceIndex(const TriMesh& mesh) : offset_(mesh.positions.size() + 1, 0), face_(3 * mesh.faces.size()) {
+  for (const Face& t : mesh.faces)
+    for (int v : t) ++offset_[v + 1];
+  std::partial_sum(offset_.begin(), offset_.end(), offset_.begin());
+  // Filled backwards from each vertex's end: no cursor array as large as the mesh.
+  for (int f = mesh.faceCount() - 1; f >= 0; --f)
+    for (int k = 2; k >= 0; --k) face_[--offset_[mesh.faces[f][k] + 1]] = f;
+  // offset_[v + 1] now points at v's first face, i.e. offset_ is shifted by one: put it back.
+  offset_.erase(offset_.begin());
+  offset_.push_back(static_cast<int>(face_.size()));
+}
+
+VertexFaceIndex::Range VertexFaceIndex::operator[](int v) const {
+  auto range = [](const std::vector<int>& list) { return Range{list.data(), list.data() + list.size()}; };
+  if (v >= baseVertices()) {
+    const std::size_t i = static_cast<std::size_t>(v - baseVertices());
+    return i < appended_.size() ? range(appended_[i]) : Range{nullptr, nullptr};
+  }
+  if (!edited_.empty()) {
+    const auto at = edited_.find(v);
+    if (at != edited_.end()) return range(at->second);
+  }
+  return {face_.data() + offset_[v], face_.data() + offset_[v + 1]};
+}
+
+std::vector<int>& VertexFaceIndex::edit(int v) {
+  if (v >= baseVertices()) {
+    const std::size_t i = static_cast<std::size_t>(v - baseVertices());
+    if (i >= appended_.size()) appended_.resize(i + 1);
+    return appended_[i];
+  }
+  const auto at = edited_.find(v);
+  if (at != edited_.end()) return at->second;
+  return edited_.emplace(v, (*this)[v].copy()).first->second;
+}
+
+std::size_t VertexFaceIndex::byteSize() const {
+  std::size_t bytes = (offset_.size() + face_.size()) * sizeof(int) + appended_.capacity() * sizeof(std::vector<int>);
+  for (const auto& [v, faces] : edited_) bytes += sizeof(v) + sizeof(faces) + faces.capacity() * sizeof(int);
+  for (const auto& faces : appended_) bytes += faces.capacity() * sizeof(int);
+  return bytes;
+}
+
+namespace {
+
+// The faces within `rings` rings of `seeds`, sorted, and the piece they make.
+template <class Mesh, class Adjacency, class FaceAt, class PositionAt>
+Submesh extract(const Mesh& mesh, const Adjacency& adjacency, FaceAt faceAt, PositionAt positionAt, const std::vector<int>& seeds,
+                int rings) {
+  std::unordered_set<int> inVertex(seeds.begin(), seeds.end()), inFace;
   std::vector<int> frontier = seeds, faces;
-  for (int v : seeds) inVertex[v] = 1;
   for (int r = 0; r < rings; ++r) {
     std::vector<int> next;
     for (int v : frontier) {
       for (int f : adjacency[v]) {
-        if (inFace[f]) continue;
-        inFace[f] = 1;
+        if (!inFace.insert(f).second) continue;
         faces.push_back(f);
-        for (int w : mesh.faces[f]) {
-          if (!inVertex[w]) {
-            inVertex[w] = 1;
-            next.push_back(w);
-          }
-        }
+        for (int w : faceAt(mesh, f))
+          if (inVertex.insert(w).second) next.push_back(w);
       }
     }
     frontier.swap(next);
@@ -41,22 +85,39 @@ Submesh extractSubmesh(const TriMesh& mesh, const VertexFaces& adjacency, const 
   std::sort(faces.begin(), faces.end());
 
   Submesh sub;
-  std::vector<int> local(mesh.positions.size(), -1);
+  std::unordered_map<int, int> local;
+  local.reserve(2 * faces.size());
+  sub.mesh.faces.reserve(faces.size());
+  sub.face.reserve(faces.size());
   for (int f : faces) {
     Face t;
     for (int k = 0; k < 3; ++k) {
-      const int v = mesh.faces[f][k];
-      if (local[v] < 0) {
-        local[v] = static_cast<int>(sub.vertex.size());
+      const int v = faceAt(mesh, f)[k];
+      const auto [at, added] = local.emplace(v, static_cast<int>(sub.vertex.size()));
+      if (added) {
         sub.vertex.push_back(v);
-        sub.mesh.positions.push_back(mesh.positions[v]);
+        sub.mesh.positions.push_back(positionAt(mesh, v));
       }
-      t[k] = local[v];
+      t[k] = at->second;
     }
     sub.mesh.faces.push_back(t);
     sub.face.push_back(f);
   }
   return sub;
+}
+
+}  // namespace
+
+Submesh extractSubmesh(const TriMesh& mesh, const VertexFaces& adjacency, const std::vector<int>& seeds, int rings) {
+  return extract(
+      mesh, adjacency, [](const TriMesh& m, int f) -> const Face& { return m.faces[f]; },
+      [](const TriMesh& m, int v) -> const Vec3& { return m.positions[v]; }, seeds, rings);
+}
+
+Submesh extractSubmesh(const AppendedMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<int>& seeds, int rings) {
+  return extract(
+      mesh, adjacency, [](const AppendedMesh& m, int f) -> const Face& { return m.face(f); },
+      [](const AppendedMesh& m, int v) -> const Vec3& { return m.position(v); }, seeds, rings);
 }
 
 }  // namespace elastica

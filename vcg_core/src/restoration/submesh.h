@@ -4,6 +4,7 @@
 
 #include <elastica/types.h>
 
+#include <unordered_map>
 #include <vector>
 
 namespace elastica {
@@ -11,6 +12,56 @@ namespace elastica {
 /// For each vertex, the faces that use it (built once, extended as faces are appended).
 using VertexFaces = std::vector<std::vector<int>>;
 VertexFaces vertexFaces(const TriMesh& mesh);
+
+/// A mesh extended without being copied: the vertices and faces of `base` (whose faces may be
+/// rewired in place), then those appended here. Hole filling grows a scan this way, so that a
+/// scan of millions of vertices is never held twice.
+struct AppendedMesh {
+  explicit AppendedMesh(TriMesh& base) : base(&base) {}
+  TriMesh* base;
+  std::vector<Vec3> positions;  ///< vertices from base->vertexCount() on
+  std::vector<Face> faces;      ///< faces from base->faceCount() on
+
+  int baseVertices() const { return base->vertexCount(); }
+  int baseFaces() const { return base->faceCount(); }
+  int vertexCount() const { return baseVertices() + static_cast<int>(positions.size()); }
+  int faceCount() const { return baseFaces() + static_cast<int>(faces.size()); }
+  const Vec3& position(int v) const { return v < baseVertices() ? base->positions[v] : positions[v - baseVertices()]; }
+  const Face& face(int f) const { return f < baseFaces() ? base->faces[f] : faces[f - baseFaces()]; }
+  Face& face(int f) { return f < baseFaces() ? base->faces[f] : faces[f - baseFaces()]; }
+};
+
+/// For each vertex of an AppendedMesh, the faces that use it: compact arrays (CSR, 4 bytes per
+/// corner and per vertex: a third of the mesh's own bytes, where vertexFaces()' lists take about
+/// as much as the mesh) for the base as it was given, and a list of its own for each vertex whose
+/// faces have changed since (edit()) and for each vertex appended since.
+class VertexFaceIndex {
+ public:
+  /// `mesh`'s faces must use vertices in [0, vertexCount()).
+  explicit VertexFaceIndex(const TriMesh& mesh);
+
+  /// The faces of one vertex, in the order they were listed (the base's in increasing order).
+  struct Range {
+    const int *first, *last;
+    const int* begin() const { return first; }
+    const int* end() const { return last; }
+    std::size_t size() const { return static_cast<std::size_t>(last - first); }
+    bool empty() const { return first == last; }
+    int front() const { return *first; }
+    std::vector<int> copy() const { return {first, last}; }
+  };
+  Range operator[](int v) const;
+  /// The list of `v` to change (copied out of the compact arrays the first time); `v` may be a
+  /// vertex appended after the index was built.
+  std::vector<int>& edit(int v);
+  std::size_t byteSize() const;
+
+ private:
+  int baseVertices() const { return static_cast<int>(offset_.size()) - 1; }
+  std::vector<int> offset_, face_;
+  std::unordered_map<int, std::vector<int>> edited_;  // base vertices whose faces changed
+  std::vector<std::vector<int>> appended_;            // vertices from baseVertices() on
+};
 
 struct Submesh {
   TriMesh mesh;
@@ -20,7 +71,8 @@ struct Submesh {
 
 /// The faces within `rings` face-rings of `seeds` (rings = 1: the faces that use a seed; 2: also
 /// the faces that use any vertex of those; …): faces in their original order, vertices in order of
-/// first use.
+/// first use. Time and memory in proportion to the piece, not to the mesh.
 Submesh extractSubmesh(const TriMesh& mesh, const VertexFaces& adjacency, const std::vector<int>& seeds, int rings);
+Submesh extractSubmesh(const AppendedMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<int>& seeds, int rings);
 
 }  // namespace elastica
