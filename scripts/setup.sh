@@ -94,9 +94,11 @@ cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
 # elephant (2,775 vertices, genus 3), the same elephant with 106 holes, whose borders pass twice
 # through some vertices, and a closed scan of the Stanford bunny (bunny00.off, 37,706 vertices) for
 # the scanner-style holes (tests/scanner_holes_test.cpp) and the many-holes benchmark
-# (bench/scan_holes_bench). The restoration tests and benchmarks use them. `apt-get download`
+# (bench/scan_holes_bench), and two more scans for the hole-size sweep of docs/restoration.md
+# (bench/restoration_sweep.sh): the armadillo (26,002 vertices) and a refined elephant (44,460).
+# The restoration tests and benchmarks use them. `apt-get download`
 # fetches the package file without installing it (24 MB; no root needed once apt's lists exist).
-cgal_meshes=(elephant.off elephant-with-holes.off bunny00.off)
+cgal_meshes=(elephant.off elephant-with-holes.off bunny00.off armadillo.off refined_elephant.off)
 fetch_cgal_meshes() {
   local candidate dir work deb m complete=1
   candidate=$(apt-cache policy libcgal-demo 2>/dev/null | awk '/Candidate:/ {print $2}')

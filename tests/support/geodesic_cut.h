@@ -12,7 +12,6 @@
 #include <cstdlib>
 #include <functional>
 #include <limits>
-#include <map>
 #include <numeric>
 #include <queue>
 #include <utility>
@@ -63,22 +62,44 @@ inline std::vector<int> facesByDistance(const TriMesh& full, const Vec3& center)
 
 // The first `count` faces of `order` are cut away.
 inline Cut cutFaces(const TriMesh& full, const std::vector<int>& order, int count) {
-  std::vector<std::uint8_t> removed(full.faces.size(), 0), kept(full.faces.size(), 1);
+  const int nf = full.faceCount();
+  std::vector<std::uint8_t> removed(nf, 0), kept(nf, 1);
   for (int i = 0; i < count; ++i) {
     removed[order[i]] = 1;
     kept[order[i]] = 0;
   }
-  // Border edges of the cut: edges between a removed and a kept face.
-  std::map<std::pair<int, int>, int> edgeSide;  // +1 per kept face, +100 per removed face
-  for (std::size_t f = 0; f < full.faces.size(); ++f) {
+  // Faces by edge (sorted (edge key, face) pairs): two faces per edge on a closed manifold mesh.
+  std::vector<std::pair<long long, int>> byEdge;
+  byEdge.reserve(3 * static_cast<std::size_t>(nf));
+  for (int f = 0; f < nf; ++f) {
     const Face& t = full.faces[f];
     for (int k = 0; k < 3; ++k) {
-      const int a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
-      edgeSide[{a, b}] += removed[f] ? 100 : 1;
+      const long long a = std::min(t[k], t[(k + 1) % 3]), b = std::max(t[k], t[(k + 1) % 3]);
+      byEdge.emplace_back(a * full.vertexCount() + b, f);
     }
   }
+  std::sort(byEdge.begin(), byEdge.end());
+  // A kept piece enclosed by the cut (the ordering leaves single faces behind where the distance
+  // field is flat) would be an island inside the hole: cut it too, keeping only the largest piece.
+  std::vector<int> parent(nf);
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t i = 1; i < byEdge.size(); ++i)
+    if (byEdge[i].first == byEdge[i - 1].first && kept[byEdge[i].second] && kept[byEdge[i - 1].second])
+      parent[root(byEdge[i].second)] = root(byEdge[i - 1].second);
+  std::vector<int> size(nf, 0);
+  for (int f = 0; f < nf; ++f)
+    if (kept[f]) ++size[root(f)];
+  const int largest = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
+  for (int f = 0; f < nf; ++f)
+    if (kept[f] && root(f) != largest) kept[f] = 0, removed[f] = 1;
+  // Border edges of the cut: edges between a removed and a kept face.
   Cut cut;
-  for (const auto& [edge, side] : edgeSide) cut.borderEdges += side == 101;
+  for (std::size_t i = 1; i < byEdge.size(); ++i)
+    if (byEdge[i].first == byEdge[i - 1].first && kept[byEdge[i].second] != kept[byEdge[i - 1].second]) ++cut.borderEdges;
   cut.holed = bench::facesOf(full, kept);
   cut.truth = bench::facesOf(full, removed);
   return cut;

@@ -97,6 +97,7 @@ class MonotonePatch {
   MonotonePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, HoleReport& hole)
       : sub_(sub), patchFace_(patchFace), sigma_(sigma), hole_(hole) {
     kept_ = {sub_, patchFace_, sigma_, measurePatch(sub_, patchFace_)};
+    keptCrosses_ = selfIntersects(sub_, &patchFace_);
     record("triangulation", true, kept_.measure, 0);
   }
 
@@ -118,7 +119,9 @@ class MonotonePatch {
         energy && !(m.energy <= before.energy + kEnergySlack * std::max(std::abs(before.energy), 1.0));
     // Faces that cross (the patch through itself or its surroundings within the piece) undo a
     // stage too: the fill's flow runs without the fairing's embedding guard.
-    const bool crossing = !lowerAngle && !higherEnergy && selfIntersects(sub_, &patchFace_);
+    // (Only where the kept patch is free of crossings itself: a border that runs through the
+    // surface around it makes every patch cross, and then no stage can be judged by it.)
+    const bool crossing = !lowerAngle && !higherEnergy && !keptCrosses_ && selfIntersects(sub_, &patchFace_);
     const bool keep = !lowerAngle && !higherEnergy && !crossing;
     if (keep) kept_ = {sub_, patchFace_, sigma_, m};
     record(stage, keep, m, steps,
@@ -156,6 +159,7 @@ class MonotonePatch {
   std::vector<double>& sigma_;
   HoleReport& hole_;
   PatchSnapshot kept_;
+  bool keptCrosses_ = false;
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
