@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # docs/restoration.md's hole-size sweep: on three real scans from Debian's libcgal-demo data
 # archive (the Stanford bunny as CGAL ships it, the armadillo, a refined elephant), geodesic-disc
-# holes of 20–200 border edges at the scan's own resolution and of 400 on the scan refined once
-# (1-to-4), each filled by `elastica fill`'s default and by CGAL's triangulate_refine_and_fair_hole
+# holes of 20–200 border edges, each filled by `elastica fill`'s default and by CGAL's
+# triangulate_refine_and_fair_hole
 # (bench/restoration_sweep.cpp). Rewrites the part of docs/restoration.md between the
 # `<!-- sweep:begin -->` and `<!-- sweep:end -->` markers.
 #
@@ -34,7 +34,6 @@ table=$(mktemp)
   for c in "${cases[@]}"; do
     read -r name mesh x y z <<<"$c"
     "$bin" "$mesh" --center "$x" "$y" "$z" --edges 20,50,100,200 --name "$name"
-    "$bin" "$mesh" --center "$x" "$y" "$z" --edges 400 --subdivide 1 --name "$name ×4"
   done
 } >"$table"
 commit=$(git rev-parse --short HEAD)
@@ -42,8 +41,7 @@ section=$(mktemp)
 {
   echo "<!-- sweep:begin -->"
   echo "Made by \`bench/restoration_sweep.sh\` at commit $commit, one run, on a shared 2-core machine (times: the best"
-  echo "of the runs that fit in a second, one run above it; distances in % of the bounding-box diagonal; \"×4\": the"
-  echo "scan refined once, 1-to-4, so that a 400-edge hole fits as a disc)."
+  echo "of the runs that fit in a second, one run above it; distances in % of the bounding-box diagonal)."
   echo
   cat "$table"
   echo "<!-- sweep:end -->"

@@ -79,8 +79,9 @@ inline Cut cutFaces(const TriMesh& full, const std::vector<int>& order, int coun
     }
   }
   std::sort(byEdge.begin(), byEdge.end());
-  // A kept piece enclosed by the cut (the ordering leaves single faces behind where the distance
-  // field is flat) would be an island inside the hole: cut it too, keeping only the largest piece.
+  // A small kept piece enclosed by the cut (the ordering leaves single faces behind where the
+  // distance field is flat) would be an island inside the hole: cut it too. Pieces as large as the
+  // cut itself (a cut through a neck) stay.
   std::vector<int> parent(nf);
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int i) {
@@ -95,7 +96,7 @@ inline Cut cutFaces(const TriMesh& full, const std::vector<int>& order, int coun
     if (kept[f]) ++size[root(f)];
   const int largest = static_cast<int>(std::max_element(size.begin(), size.end()) - size.begin());
   for (int f = 0; f < nf; ++f)
-    if (kept[f] && root(f) != largest) kept[f] = 0, removed[f] = 1;
+    if (kept[f] && root(f) != largest && size[root(f)] < count) kept[f] = 0, removed[f] = 1;
   // Border edges of the cut: edges between a removed and a kept face.
   Cut cut;
   for (std::size_t i = 1; i < byEdge.size(); ++i)
