@@ -46,14 +46,25 @@ section=$(mktemp)
   cat "$table"
   echo "<!-- sweep:end -->"
 } >"$section"
-python3 - "$section" <<'EOF'
+scan=$(mktemp)
+{
+  echo "<!-- scan:begin -->"
+  echo "Made by \`bench/restoration_sweep.sh\` (\`scan_holes_bench\`) at commit $commit, one run:"
+  echo
+  "$build/bin/scan_holes_bench" --header
+  "$build/bin/scan_holes_bench" "$samples/bunny00.off" --subdivide 3 --holes 200 --name "bunny00, refined 3 times"
+  echo "<!-- scan:end -->"
+} >"$scan"
+python3 - "$section" "$scan" <<'EOF'
 import re, sys
 doc = open("docs/restoration.md").read()
-new = open(sys.argv[1]).read().rstrip("\n")
-pattern = re.compile(r"<!-- sweep:begin -->.*?<!-- sweep:end -->", re.S)
-if not pattern.search(doc):
-    sys.exit("restoration_sweep.sh: docs/restoration.md has no sweep markers")
-open("docs/restoration.md", "w").write(pattern.sub(lambda m: new, doc))
+for path, name in ((sys.argv[1], "sweep"), (sys.argv[2], "scan")):
+    new = open(path).read().rstrip("\n")
+    pattern = re.compile(r"<!-- %s:begin -->.*?<!-- %s:end -->" % (name, name), re.S)
+    if not pattern.search(doc):
+        sys.exit("restoration_sweep.sh: docs/restoration.md has no %s markers" % name)
+    doc = pattern.sub(lambda m: new, doc)
+open("docs/restoration.md", "w").write(doc)
 EOF
-rm -f "$table" "$section"
-echo "restoration_sweep.sh: rewrote docs/restoration.md's sweep section"
+rm -f "$table" "$section" "$scan"
+echo "restoration_sweep.sh: rewrote docs/restoration.md's sweep and big-scan sections"
