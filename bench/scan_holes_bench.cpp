@@ -25,6 +25,7 @@
 #include <elastica/topology.h>
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
+#include "restoration/submesh.h"
 
 #include <algorithm>
 #include <chrono>
@@ -96,19 +97,6 @@ TriMesh readRaw(const std::string& path) {
 
 // ------------------------------------------------------------------ cutting the holes
 
-// For each vertex, the faces that use it (CSR).
-struct VertexFaceIndex {
-  std::vector<int> offset, face;
-  explicit VertexFaceIndex(const TriMesh& m) : offset(m.positions.size() + 1, 0), face(3 * m.faces.size()) {
-    for (const Face& t : m.faces)
-      for (int v : t) ++offset[v + 1];
-    std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    std::vector<int> cursor(offset.begin(), offset.end() - 1);
-    for (int f = 0; f < static_cast<int>(m.faces.size()); ++f)
-      for (int v : m.faces[f]) face[cursor[v]++] = f;
-  }
-};
-
 // Seeds spread over the surface: farthest-point sampling (Euclidean), from vertex 0.
 std::vector<int> spreadSeeds(const TriMesh& m, int count) {
   std::vector<double> nearest(m.positions.size(), std::numeric_limits<double>::infinity());
@@ -142,8 +130,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
   queue.emplace(0.0, seed);
   // The face across edge (a, b) from face f, or -1.
   auto across = [&](int f, int a, int b) {
-    for (int k = vf.offset[a]; k < vf.offset[a + 1]; ++k) {
-      const int g = vf.face[k];
+    for (int g : vf[a]) {
       if (g == f) continue;
       const Face& t = m.faces[g];
       if (t[0] == b || t[1] == b || t[2] == b) return g;
@@ -156,8 +143,8 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
     queue.pop();
     if (d > dist[v] || settled[v]) continue;
     settled[v] = 1;
-    for (int k = vf.offset[v]; k < vf.offset[v + 1] && border < edges; ++k) {
-      const int f = vf.face[k];
+    for (int f : vf[v]) {
+      if (border >= edges) break;
       const Face& t = m.faces[f];
       if (removed[f] || !settled[t[0]] || !settled[t[1]] || !settled[t[2]]) continue;
       if (taken[t[0]] || taken[t[1]] || taken[t[2]]) continue;
@@ -168,8 +155,8 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
         border += g >= 0 && removed[g] ? -1 : 1;
       }
     }
-    for (int k = vf.offset[v]; k < vf.offset[v + 1]; ++k) {
-      for (int w : m.faces[vf.face[k]]) {
+    for (int f : vf[v]) {
+      for (int w : m.faces[f]) {
         if (taken[w]) continue;  // a wall: the disc does not wrap around an earlier hole
         const double l = d + (m.positions[w] - m.positions[v]).norm();
         if (l < dist[w]) {
@@ -192,8 +179,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
     const int v = work.back();
     work.pop_back();
     int changes = 0;  // edges at v between a cut face and a kept one
-    for (int k = vf.offset[v]; k < vf.offset[v + 1]; ++k) {
-      const int f = vf.face[k];
+    for (int f : vf[v]) {
       for (int x : m.faces[f]) {
         if (x == v) continue;
         const int g = across(f, v, x);
@@ -201,8 +187,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
       }
     }
     if (changes <= 2) continue;
-    for (int k = vf.offset[v]; k < vf.offset[v + 1]; ++k) {
-      const int f = vf.face[k];
+    for (int f : vf[v]) {
       if (removed[f]) continue;
       removed[f] = 1;
       cut.push_back(f);
@@ -218,8 +203,8 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
   // The hole and one ring of faces around it are off limits to the next holes.
   for (int f : cut)
     for (int v : m.faces[f])
-      for (int k = vf.offset[v]; k < vf.offset[v + 1]; ++k)
-        for (int w : m.faces[vf.face[k]]) taken[w] = 1;
+      for (int g : vf[v])
+        for (int w : m.faces[g]) taken[w] = 1;
   return border;
 }
 

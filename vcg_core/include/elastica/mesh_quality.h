@@ -8,6 +8,9 @@
 
 namespace elastica {
 
+/// Smallest corner angle, in degrees, of the triangle (a, b, c).
+double smallestAngleDegrees(const Vec3& a, const Vec3& b, const Vec3& c);
+
 /// Smallest corner angle, in degrees, over the faces [firstFace, end) of `mesh` (180 if none).
 double smallestAngleDegrees(const TriMesh& mesh, int firstFace = 0);
 

@@ -1,6 +1,7 @@
 #include <elastica/mesh_quality.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace elastica {
@@ -8,17 +9,21 @@ namespace elastica {
 namespace {
 
 double smallestAngleOfFace(const TriMesh& mesh, int f) {
+  const Face& t = mesh.faces[f];
+  return smallestAngleDegrees(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]);
+}
+
+}  // namespace
+
+double smallestAngleDegrees(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const std::array<const Vec3*, 3> p{&a, &b, &c};
   double best = 180;
   for (int k = 0; k < 3; ++k) {
-    const Vec3& a = mesh.positions[mesh.faces[f][k]];
-    const Vec3 u = mesh.positions[mesh.faces[f][(k + 1) % 3]] - a;
-    const Vec3 w = mesh.positions[mesh.faces[f][(k + 2) % 3]] - a;
+    const Vec3 u = *p[(k + 1) % 3] - *p[k], w = *p[(k + 2) % 3] - *p[k];
     best = std::min(best, std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / M_PI);
   }
   return best;
 }
-
-}  // namespace
 
 double smallestAngleDegrees(const TriMesh& mesh, int firstFace) {
   double best = 180;

@@ -209,16 +209,4 @@ double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLo
   return bound * 180 / pi;
 }
 
-double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const Topology& topo, const HoleLoop& loop) {
-  return borderCornerBoundDegrees(positions, loop, [&](int v) {
-    double meshAngle = 0;  // what the mesh's own faces span at v
-    for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) {
-      const int c = topo.corner(k), f = c / 3, j = c % 3;
-      const Face& t = topo.faces()[f];
-      meshAngle += angleBetween(positions[t[(j + 1) % 3]] - positions[v], positions[t[(j + 2) % 3]] - positions[v]);
-    }
-    return meshAngle;
-  });
-}
-
 }  // namespace elastica

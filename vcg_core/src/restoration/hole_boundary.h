@@ -62,6 +62,5 @@ double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v);
 /// `meshAngle(v)`: the angle the mesh's own faces span at v, in radians (cornerAngleSum).
 double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLoop& loop,
                                 const std::function<double(int)>& meshAngle);
-double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const Topology& topo, const HoleLoop& loop);
 
 }  // namespace elastica

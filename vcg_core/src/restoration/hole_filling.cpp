@@ -130,14 +130,16 @@ class MonotonePatch {
   }
 
   // A stage measured but judged together with the next one (refinement samples the flat fill's
-  // creases finer, which raises their discrete energy without changing the shape).
-  void note(const char* stage) { record(stage, false, measurePatch(sub_, patchFace_), 0, kWithNext); }
-  void judgedWithNext(bool kept) {
-    for (FillStageReport& s : hole_.stages)
-      if (s.why == kWithNext) {
-        s.kept = kept;
-        s.why = kept ? "" : "not kept with the next stage";
-      }
+  // creases finer, which raises their discrete energy without changing the shape): judge() the
+  // next, then settleWithNext() with its verdict.
+  void note(const char* stage) {
+    noted_ = hole_.stages.size();
+    record(stage, false, measurePatch(sub_, patchFace_), 0);
+  }
+  void settleWithNext(bool kept) {
+    FillStageReport& s = hole_.stages[noted_];
+    s.kept = kept;
+    s.why = kept ? "" : "not kept with the next stage";
   }
   // Ends with the last kept patch.
   void restore() {
@@ -148,7 +150,6 @@ class MonotonePatch {
   const PatchMeasure& kept() const { return kept_.measure; }
 
  private:
-  static constexpr const char* kWithNext = "judged with the next stage";
   void record(const char* stage, bool kept, const PatchMeasure& m, long long steps, std::string why = "") {
     hole_.stages.push_back({stage, kept, m.minAngleDegrees, m.energy, steps, seconds(last_), std::move(why)});
     last_ = std::chrono::steady_clock::now();
@@ -160,6 +161,7 @@ class MonotonePatch {
   HoleReport& hole_;
   PatchSnapshot kept_;
   bool keptCrosses_ = false;
+  std::size_t noted_ = 0;  // the stage note() recorded
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
@@ -200,7 +202,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
     hole.reason = failed;
   }
   const bool start = patch.judge("bi-Laplace", 0, failed, false);
-  patch.judgedWithNext(start);
+  patch.settleWithNext(start);
   hole.energyBefore = hole.energyAfter = patch.kept().energy;
   if (!start || opt.stopAfter == FillStage::Biharmonic) {
     patch.restore();
@@ -380,19 +382,12 @@ std::vector<PinchWeld> settleWelds(TriMesh& mesh, const std::map<int, std::vecto
 
 // The smallest angle of the faces from `firstFace` on.
 double smallestAngleSince(const AppendedMesh& mesh, int firstFace) {
-  TriMesh piece;
-  std::unordered_map<int, int> local;
+  double best = 180;
   for (int f = firstFace; f < mesh.faceCount(); ++f) {
-    Face t;
-    for (int k = 0; k < 3; ++k) {
-      const int v = mesh.face(f)[k];
-      const auto [at, added] = local.emplace(v, piece.vertexCount());
-      if (added) piece.positions.push_back(mesh.position(v));
-      t[k] = at->second;
-    }
-    piece.faces.push_back(t);
+    const Face& t = mesh.face(f);
+    best = std::min(best, smallestAngleDegrees(mesh.position(t[0]), mesh.position(t[1]), mesh.position(t[2])));
   }
-  return smallestAngleDegrees(piece);
+  return best;
 }
 
 void validate(const HoleFillOptions& opt) {
