@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <utility>
 
 namespace elastica::bench {
 namespace {
@@ -30,81 +32,105 @@ double pointTriangleDistance2(const Vec3& p, const Vec3& a, const Vec3& b, const
   return (p - (a + ab * (vb * denom) + ac * (vc * denom))).squaredNorm();
 }
 
-// Faces of a mesh binned in a uniform grid (by bounding box), for nearest-face queries: the exact
-// nearest face, as brute force would find it, in time that grows with the patch, not with patch ×
-// truth (a 2,000-edge hole's patch and truth hold ~10^5 faces each).
-class FaceGrid {
+// Squared distance from p to the nearest point of the box [lo, hi] (0 inside): no face in the box
+// can be nearer than that.
+double boxDistance2(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+  return (lo - p).cwiseMax(p - hi).cwiseMax(0.0).squaredNorm();
+}
+
+// A bounding-box tree over a mesh's faces, for nearest-face queries: the exact nearest face, as
+// brute force would find it, in time that grows with the patch, not with patch × truth (a
+// 2,000-edge hole's patch and truth hold ~10^5 faces each). A tree rather than a uniform grid
+// because a grid's search grows with the cube of the distance in cells, and a patch that wraps
+// around a model has points far from the truth; the tree's cost barely depends on the distance.
+class FaceTree {
  public:
-  explicit FaceGrid(const TriMesh& m) : m_(m) {
-    lo_ = hi_ = m.positions.empty() ? Vec3::Zero() : m.positions[0];
-    for (const Vec3& p : m.positions) {
-      lo_ = lo_.cwiseMin(p);
-      hi_ = hi_.cwiseMax(p);
-    }
-    // About one face per cell on a surface: cells of ~2 mean edge lengths.
-    double edge = 0;
-    for (const Face& f : m.faces) edge += (m.positions[f[0]] - m.positions[f[1]]).norm();
-    h_ = std::max(2 * edge / std::max<std::size_t>(m.faces.size(), 1), 1e-12 * (hi_ - lo_).norm() + 1e-300);
-    h_ = std::max(h_, (hi_ - lo_).maxCoeff() / 500);  // at most ~500 cells a side
-    for (int k = 0; k < 3; ++k) n_[k] = static_cast<int>((hi_[k] - lo_[k]) / h_) + 1;
-    cells_.resize(static_cast<std::size_t>(n_[0]) * n_[1] * n_[2]);
-    for (std::size_t f = 0; f < m.faces.size(); ++f) {
-      Vec3 a = m.positions[m.faces[f][0]], b = a;
-      for (int v : m.faces[f]) {
-        a = a.cwiseMin(m.positions[v]);
-        b = b.cwiseMax(m.positions[v]);
-      }
-      const auto ca = cellOf(a), cb = cellOf(b);
-      for (int x = ca[0]; x <= cb[0]; ++x)
-        for (int y = ca[1]; y <= cb[1]; ++y)
-          for (int z = ca[2]; z <= cb[2]; ++z) cells_[index(x, y, z)].push_back(static_cast<int>(f));
-    }
+  explicit FaceTree(const TriMesh& m) : m_(m), order_(m.faces.size()) {
+    std::iota(order_.begin(), order_.end(), 0);
+    centroids_.reserve(m.faces.size());
+    for (const Face& f : m.faces) centroids_.push_back((m.positions[f[0]] + m.positions[f[1]] + m.positions[f[2]]) / 3);
+    if (!order_.empty()) build(0, static_cast<int>(order_.size()));
   }
 
-  // Squared distance from p to the nearest face: cube shells of cells around p's cell, until the
-  // next shell cannot hold anything nearer.
+  // Squared distance from p to the nearest face (infinity for a mesh without faces): depth first,
+  // the nearer child first, skipping every box no nearer than the best face found so far.
   double nearest2(const Vec3& p) const {
-    std::array<int, 3> c;
-    for (int k = 0; k < 3; ++k) c[k] = static_cast<int>(std::floor((p[k] - lo_[k]) / h_));
-    int reach = 0;  // shells needed to cover the whole grid from c
-    for (int k = 0; k < 3; ++k) reach = std::max({reach, std::abs(c[k]), std::abs(n_[k] - 1 - c[k])});
     double best = std::numeric_limits<double>::infinity();
-    for (int r = 0; r <= reach; ++r) {
-      for (int x = std::max(c[0] - r, 0); x <= std::min(c[0] + r, n_[0] - 1); ++x)
-        for (int y = std::max(c[1] - r, 0); y <= std::min(c[1] + r, n_[1] - 1); ++y)
-          for (int z = std::max(c[2] - r, 0); z <= std::min(c[2] + r, n_[2] - 1); ++z) {
-            if (std::max({std::abs(x - c[0]), std::abs(y - c[1]), std::abs(z - c[2])}) != r) continue;
-            for (int f : cells_[index(x, y, z)]) {
-              const Face& g = m_.faces[f];
-              best = std::min(best, pointTriangleDistance2(p, m_.positions[g[0]], m_.positions[g[1]], m_.positions[g[2]]));
-            }
-          }
-      const double clear = r * h_;  // anything in shell r + 1 or beyond is at least this far
-      if (best <= clear * clear) break;
+    if (nodes_.empty()) return best;
+    // At most one pending node a level, plus one; median splits keep the depth at log2(faces).
+    std::array<std::pair<double, int>, 64> pending;
+    int top = 0;
+    pending[top++] = {boxDistance2(p, nodes_[0].lo, nodes_[0].hi), 0};
+    while (top > 0) {
+      const auto [bound, n] = pending[--top];
+      if (bound >= best) continue;  // best may have dropped since this node was pushed
+      const Node& node = nodes_[n];
+      if (node.right < 0) {
+        for (int i = node.begin; i < node.end; ++i) {
+          const Face& g = m_.faces[order_[i]];
+          best = std::min(best, pointTriangleDistance2(p, m_.positions[g[0]], m_.positions[g[1]], m_.positions[g[2]]));
+        }
+        continue;
+      }
+      std::pair<double, int> nearer{boxDistance2(p, nodes_[n + 1].lo, nodes_[n + 1].hi), n + 1},
+          farther{boxDistance2(p, nodes_[node.right].lo, nodes_[node.right].hi), node.right};
+      if (farther.first < nearer.first) std::swap(nearer, farther);
+      // The nearer child is popped first: it most likely holds the nearest face, and the bound it
+      // sets lets the farther one be skipped.
+      if (farther.first < best) pending[top++] = farther;
+      if (nearer.first < best) pending[top++] = nearer;
     }
     return best;
   }
 
  private:
-  std::array<int, 3> cellOf(const Vec3& p) const {
-    std::array<int, 3> c;
-    for (int k = 0; k < 3; ++k) c[k] = std::clamp(static_cast<int>((p[k] - lo_[k]) / h_), 0, n_[k] - 1);
-    return c;
+  static constexpr int kLeafFaces = 4;  // small leaves: few exact distances per box reached
+
+  struct Node {
+    Vec3 lo, hi;         // the bounding box of the node's faces
+    int begin, end;      // the node's faces: order_[begin, end)
+    int right = -1;      // the right child, or -1 for a leaf; the left child is the next node
+  };
+
+  // Makes the node over order_[begin, end) and, below it, its subtree (depth first, so that the
+  // left child follows its parent); returns the node's index.
+  int build(int begin, int end) {
+    const int n = static_cast<int>(nodes_.size());
+    Vec3 lo = m_.positions[m_.faces[order_[begin]][0]], hi = lo, clo = centroids_[order_[begin]], chi = clo;
+    for (int i = begin; i < end; ++i) {
+      for (int v : m_.faces[order_[i]]) {
+        lo = lo.cwiseMin(m_.positions[v]);
+        hi = hi.cwiseMax(m_.positions[v]);
+      }
+      clo = clo.cwiseMin(centroids_[order_[i]]);
+      chi = chi.cwiseMax(centroids_[order_[i]]);
+    }
+    nodes_.push_back({lo, hi, begin, end});
+    if (end - begin <= kLeafFaces) return n;
+    // Halve the faces at the median centroid along the axis where the centroids spread most:
+    // balanced (hence shallow) whatever the faces' sizes, and compact boxes on a surface.
+    int axis = 0;
+    (chi - clo).maxCoeff(&axis);
+    const int mid = begin + (end - begin) / 2;
+    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                     [&](int f, int g) { return centroids_[f][axis] < centroids_[g][axis]; });
+    build(begin, mid);
+    const int right = build(mid, end);
+    nodes_[n].right = right;  // not through a reference taken before: the recursion grows nodes_
+    return n;
   }
-  std::size_t index(int x, int y, int z) const { return (static_cast<std::size_t>(x) * n_[1] + y) * n_[2] + z; }
 
   const TriMesh& m_;
-  Vec3 lo_, hi_;
-  double h_ = 1;
-  std::array<int, 3> n_{1, 1, 1};
-  std::vector<std::vector<int>> cells_;
+  std::vector<int> order_;  // face indices, grouped by node
+  std::vector<Vec3> centroids_;
+  std::vector<Node> nodes_;
 };
 
 }  // namespace
 
 DistanceStats sampledDistance(const TriMesh& a, const TriMesh& b, int perEdge) {
   if (b.faces.empty()) return {};
-  const FaceGrid grid(b);
+  const FaceTree tree(b);
   double sum = 0, worst = 0;
   long count = 0;
   for (const Face& f : a.faces) {
@@ -112,7 +138,7 @@ DistanceStats sampledDistance(const TriMesh& a, const TriMesh& b, int perEdge) {
       for (int j = 0; i + j <= perEdge; ++j) {
         const double u = double(i) / perEdge, v = double(j) / perEdge;
         const Vec3 p = (1 - u - v) * a.positions[f[0]] + u * a.positions[f[1]] + v * a.positions[f[2]];
-        const double best = grid.nearest2(p);
+        const double best = tree.nearest2(p);
         sum += best;
         worst = std::max(worst, best);
         ++count;

@@ -12,8 +12,9 @@ struct DistanceStats {
   double rms = 0, max = 0;
 };
 
-/// Distance from points sampled on the faces of `a` (`perEdge`² samples per face, barycentric grid)
-/// to the nearest face of `b` (exact nearest face; `b`'s faces binned in a uniform grid).
+/// Distance from points sampled on the faces of `a` (a barycentric grid of `perEdge` steps a side:
+/// (`perEdge` + 1)(`perEdge` + 2)/2 points per face, corners and edges included) to the nearest face
+/// of `b` (exact nearest face, found in a bounding-box tree over `b`'s faces).
 DistanceStats sampledDistance(const TriMesh& a, const TriMesh& b, int perEdge = 6);
 
 /// The faces of `m` flagged in `keep`, with their vertices, as a standalone mesh.
