@@ -34,16 +34,14 @@ Vec3 unitNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
   return len > 0 ? Vec3(n / len) : Vec3::Zero();
 }
 
-}  // namespace
-
-std::optional<std::vector<Face>> triangulateHole(const std::vector<Vec3>& positions, const HoleLoop& loop,
-                                                 const std::function<bool(int, int)>& edgeExists) {
-  const int n = loop.edgeCount();
-  if (loop.pinched || n < 3) return std::nullopt;
-  const std::vector<int>& v = loop.vertices;
+// Liepa's dynamic programme over one polygon: `v` its vertices in loop order, `edgeNormal[i]` the
+// normal of the mesh face on polygon edge i → i+1 (the last entry: the closing edge n−1 → 0), or
+// zero where no face borders the edge (a chord that split a larger hole). O(n³) time, O(n²) memory.
+std::optional<std::vector<Face>> liepa(const std::vector<Vec3>& positions, const std::vector<int>& v,
+                                       const std::vector<Vec3>& edgeNormal, const std::function<bool(int, int)>& edgeExists) {
+  const int n = static_cast<int>(v.size());
   auto P = [&](int i) -> const Vec3& { return positions[v[i]]; };
-
-  // Existing mesh edges between loop vertices that are not loop edges: forbidden diagonals.
+  // Existing mesh edges between polygon vertices that are not polygon edges: forbidden diagonals.
   std::unordered_set<long long> meshEdge;
   for (int i = 0; i < n; ++i) {
     for (int k = i + 2; k < n; ++k) {
@@ -51,19 +49,17 @@ std::optional<std::vector<Face>> triangulateHole(const std::vector<Vec3>& positi
     }
   }
   auto forbidden = [&](int i, int k) { return meshEdge.count(static_cast<long long>(i) * n + k) > 0; };
-
-  // Normal of the mesh face on loop edge i → i+1: that face is (i+1, i, outside[i]).
-  std::vector<Vec3> outsideNormal(n);
-  for (int i = 0; i < n; ++i) outsideNormal[i] = unitNormal(P((i + 1) % n), P(i), positions[loop.outside[i]]);
+  // A polygon edge without a face beside it does not constrain the dihedral angle.
+  auto dihedralCos = [](const Vec3& nt, const Vec3& beside) { return beside.isZero() ? 1.0 : nt.dot(beside); };
 
   // W[i][k]: best triangulation of the sub-polygon i..k (k > i + 1); O[i][k]: its apex.
   std::vector<Weight> W(static_cast<size_t>(n) * n);
   std::vector<int> O(static_cast<size_t>(n) * n, -1);
-  // Normal of the triangle on edge (i, k) inside the sub-polygon i..k: the mesh face for a loop
+  // Normal of the triangle on edge (i, k) inside the sub-polygon i..k: the mesh face for a polygon
   // edge, else the apex triangle chosen for that sub-polygon.
   std::vector<Vec3> N(static_cast<size_t>(n) * n, Vec3::Zero());
   auto at = [n](int i, int k) { return static_cast<size_t>(i) * n + k; };
-  for (int i = 0; i + 1 < n; ++i) N[at(i, i + 1)] = outsideNormal[i];
+  for (int i = 0; i + 1 < n; ++i) N[at(i, i + 1)] = edgeNormal[i];
 
   for (int len = 2; len < n; ++len) {
     for (int i = 0; i + len < n; ++i) {
@@ -81,9 +77,9 @@ std::optional<std::vector<Face>> triangulateHole(const std::vector<Vec3>& positi
           const double longest = std::max({(P(m) - P(i)).squaredNorm(), (P(k) - P(m)).squaredNorm(), (P(i) - P(k)).squaredNorm()});
           if (!(twiceArea > kDegenerate * longest)) continue;
           const Vec3 nt = unitNormal(P(i), P(m), P(k));
-          Weight w{std::min(nt.dot(N[at(i, m)]), nt.dot(N[at(m, k)])), 0.5 * twiceArea};
+          Weight w{std::min(dihedralCos(nt, N[at(i, m)]), dihedralCos(nt, N[at(m, k)])), 0.5 * twiceArea};
           // The whole polygon: its closing edge (0, n−1) borders a mesh face too.
-          if (i == 0 && k == n - 1) w.minCos = std::min(w.minCos, nt.dot(outsideNormal[n - 1]));
+          if (i == 0 && k == n - 1) w.minCos = std::min(w.minCos, dihedralCos(nt, edgeNormal[n - 1]));
           w = w + left + right;
           if (w < best) {
             best = w;
@@ -110,6 +106,165 @@ std::optional<std::vector<Face>> triangulateHole(const std::vector<Vec3>& positi
     if (k - m > 1) stack.push_back({m, k});
   }
   return faces;
+}
+
+// One polygon of a hole to triangulate: its vertices in loop order, per edge the normal of the
+// mesh face beside it (zero beside a chord) and the direction into the hole across that edge
+// (zero beside a chord).
+struct Polygon {
+  std::vector<int> vertices;
+  std::vector<Vec3> edgeNormal, edgeInward;
+};
+
+// Above this many edges a polygon is split by a chord before Liepa's O(n³) search: 2,000 border
+// edges took about 20 s in one piece and take a few tens of ms in pieces of at most this many.
+constexpr int kLiepaEdges = 100;
+
+// The polygon seen along its area vector (Newell's normal): where it is one, a chord whose shadow
+// crosses the border's, or whose midpoint's shadow lies outside it, leaves the hole (it would cut
+// across a notch of a jagged border, or across the gap of a C-shaped hole).
+class Shadow {
+ public:
+  Shadow(const std::vector<Vec3>& positions, const std::vector<int>& v) {
+    Vec3 area = Vec3::Zero();
+    for (std::size_t k = 0; k < v.size(); ++k) area += positions[v[k]].cross(positions[v[(k + 1) % v.size()]]);
+    if (!(area.norm() > 0)) return;  // a tube's cut: no side to look from
+    const Vec3 n = area.normalized();
+    const Vec3 u = n.unitOrthogonal(), w = n.cross(u);
+    for (int x : v) q_.emplace_back(positions[x].dot(u), positions[x].dot(w));
+  }
+  bool available() const { return !q_.empty(); }
+
+  bool inside(int i, int j) const {
+    const int n = static_cast<int>(q_.size());
+    const Eigen::Vector2d a = q_[i], b = q_[j];
+    auto side = [](const Eigen::Vector2d& p, const Eigen::Vector2d& r, const Eigen::Vector2d& s) {
+      const double c = (r - p).x() * (s - p).y() - (r - p).y() * (s - p).x();
+      return (c > 0) - (c < 0);
+    };
+    // A border vertex on the chord (a jagged border's corners line up) counts as a crossing: the
+    // pieces would touch there.
+    auto onChord = [&](const Eigen::Vector2d& p) {
+      return side(a, b, p) == 0 && (p - a).dot(b - a) > 0 && (p - b).dot(a - b) > 0;
+    };
+    for (int k = 0; k < n; ++k) {
+      const int l = (k + 1) % n;
+      if (k != i && k != j && onChord(q_[k])) return false;
+      if (k == i || k == j || l == i || l == j) continue;
+      if (side(a, b, q_[k]) * side(a, b, q_[l]) < 0 && side(q_[k], q_[l], a) * side(q_[k], q_[l], b) < 0) return false;
+    }
+    const Eigen::Vector2d m = 0.5 * (a + b);  // inside: an odd number of border crossings to its right
+    bool odd = false;
+    for (int k = 0; k < n; ++k) {
+      const Eigen::Vector2d& p = q_[k];
+      const Eigen::Vector2d& r = q_[(k + 1) % n];
+      if ((p.y() > m.y()) != (r.y() > m.y()) && m.x() < p.x() + (m.y() - p.y()) / (r.y() - p.y()) * (r.x() - p.x())) odd = !odd;
+    }
+    return odd;
+  }
+
+ private:
+  std::vector<Eigen::Vector2d> q_;
+};
+
+// Triangulates `poly`: Liepa's search if it is small enough, else the polygon is cut in two along
+// a chord and each side triangulated. The chord is the shortest one between two vertices that
+// splits the polygon at least 1:2 (so the pieces shrink geometrically), leaves both ends into the
+// hole (it lies on the hole's side of the mesh faces at both ends) and, seen along the polygon's
+// area vector, stays inside it; chords are tried shortest first until both sides triangulate (a
+// hole too curved for its shadow to be a polygon takes the shortest chords that leave into it).
+// The dihedral angles across the chord are not weighed: the refinement and the fairing that
+// follow move every vertex near it anyway.
+// `failures` caps the chords that may fail over the whole recursion (each costs two sub-searches);
+// once it is spent a large polygon is given up, and the caller falls back to one whole search.
+std::optional<std::vector<Face>> triangulatePolygon(const std::vector<Vec3>& positions, const Polygon& poly,
+                                                    const std::function<bool(int, int)>& edgeExists, int& failures) {
+  const int n = static_cast<int>(poly.vertices.size());
+  if (n <= kLiepaEdges) return liepa(positions, poly.vertices, poly.edgeNormal, edgeExists);
+  auto P = [&](int i) -> const Vec3& { return positions[poly.vertices[i]]; };
+  // Into the hole at vertex i: the mean of the inward directions across its two edges.
+  auto inward = [&](int i) { return Vec3(poly.edgeInward[i] + poly.edgeInward[(i + n - 1) % n]); };
+  std::vector<std::pair<double, std::pair<int, int>>> chords;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 in = inward(i);
+    for (int j = i + (n + 2) / 3; j <= i + n / 2 && j < n; ++j) {
+      // Both pieces hold at least a third of the edges: j − i and n − (j − i) are in [n/3, 2n/3].
+      const Vec3 d = P(j) - P(i);
+      if ((!in.isZero() && d.dot(in) <= 0) || (!inward(j).isZero() && d.dot(inward(j)) >= 0)) continue;
+      chords.push_back({d.squaredNorm(), {i, j}});
+    }
+  }
+  std::sort(chords.begin(), chords.end());
+
+  auto split = [&](int i, int j) -> std::optional<std::vector<Face>> {
+    // Side one runs i → j and closes along the chord j → i; side two runs j → i (through n) and
+    // closes along i → j. Both keep the loop's direction, so their faces keep its orientation.
+    Polygon a, b;
+    for (int k = i; k <= j; ++k) {
+      a.vertices.push_back(poly.vertices[k]);
+      const bool chord = k == j;
+      a.edgeNormal.push_back(chord ? Vec3::Zero() : poly.edgeNormal[k]);
+      a.edgeInward.push_back(chord ? Vec3::Zero() : poly.edgeInward[k]);
+    }
+    for (int k = j; k != i + n + 1; ++k) {
+      const int kk = k % n;
+      b.vertices.push_back(poly.vertices[kk]);
+      const bool chord = kk == i;
+      b.edgeNormal.push_back(chord ? Vec3::Zero() : poly.edgeNormal[kk]);
+      b.edgeInward.push_back(chord ? Vec3::Zero() : poly.edgeInward[kk]);
+    }
+    auto left = triangulatePolygon(positions, a, edgeExists, failures);
+    auto right = left ? triangulatePolygon(positions, b, edgeExists, failures) : std::nullopt;
+    if (!right) {
+      --failures;
+      return std::nullopt;
+    }
+    left->insert(left->end(), right->begin(), right->end());
+    return left;
+  };
+  // Each shadow test is O(n): at most this many, so that the search stays O(n²).
+  constexpr int kShadowTests = 64;
+  const Shadow shadow(positions, poly.vertices);
+  for (bool useShadow : {true, false}) {
+    if (useShadow && !shadow.available()) continue;
+    int tests = 0;
+    for (std::size_t t = 0; t < chords.size() && failures > 0; ++t) {
+      const auto [i, j] = chords[t].second;
+      if (edgeExists(poly.vertices[i], poly.vertices[j])) continue;
+      if (useShadow && (++tests > kShadowTests || !shadow.inside(i, j))) {
+        if (tests > kShadowTests) break;
+        continue;
+      }
+      if (auto faces = split(i, j)) return faces;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::vector<Face>> triangulateHole(const std::vector<Vec3>& positions, const HoleLoop& loop,
+                                                 const std::function<bool(int, int)>& edgeExists) {
+  const int n = loop.edgeCount();
+  if (loop.pinched || n < 3) return std::nullopt;
+  Polygon poly;
+  poly.vertices = loop.vertices;
+  for (int i = 0; i < n; ++i) {
+    // The mesh face on loop edge i → i+1 is (i+1, i, outside[i]); the hole lies across the edge
+    // from that face's third corner.
+    const Vec3& a = positions[loop.vertices[i]];
+    const Vec3& b = positions[loop.vertices[(i + 1) % n]];
+    const Vec3& o = positions[loop.outside[i]];
+    poly.edgeNormal.push_back(unitNormal(b, a, o));
+    const Vec3 t = (b - a).normalized(), w = o - a;
+    poly.edgeInward.push_back(-(w - w.dot(t) * t));
+  }
+  // A few failed chords are normal (a chord along an existing edge's pair of faces, a degenerate
+  // triangle on one side); a hole where many fail is searched in one piece, as slow as that is.
+  constexpr int kChordFailures = 16;
+  int failures = kChordFailures;
+  if (auto faces = triangulatePolygon(positions, poly, edgeExists, failures)) return faces;
+  return n > kLiepaEdges ? liepa(positions, poly.vertices, poly.edgeNormal, edgeExists) : std::nullopt;
 }
 
 }  // namespace elastica

@@ -17,7 +17,8 @@ namespace elastica {
 /// Triangulates `loop` over `positions` without adding vertices. A diagonal for which
 /// `edgeExists(a, b)` (two mesh vertices already joined) is never used: it would make that edge
 /// non-manifold; nor is a triangle without area. The triangles are oriented like the mesh around
-/// the hole. O(n³) time and O(n²) memory for n border edges.
+/// the hole. O(n³) time and O(n²) memory up to 100 border edges; longer borders are cut by chords
+/// into pieces of at most 100 (O(n²) for the chord search, then O(100²·n)), searched one by one.
 /// Returns nothing if the loop is pinched or no triangulation avoids the existing edges and
 /// degenerate triangles.
 std::optional<std::vector<Face>> triangulateHole(const std::vector<Vec3>& positions, const HoleLoop& loop,
