@@ -44,7 +44,9 @@ void FlowState::buildConnectivity() {
 
 void FlowState::maintain(double area) {
   if (scaleFree_) normalizeArea(area);
-  if (opt_.flipEdges && mayFlip() && flipToDelaunay(mesh_, roles_.free) > 0) {
+  if (!opt_.flipEdges || ++checksSinceFlipSearch_ < opt_.flipInterval) return;
+  checksSinceFlipSearch_ = 0;
+  if (mayFlip() && flipToDelaunay(mesh_, roles_.free) > 0) {
     topo_ = Topology(mesh_.vertexCount(), mesh_.faces);
     buildConnectivity();
   }

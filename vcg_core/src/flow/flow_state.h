@@ -77,6 +77,7 @@ class FlowState {
   VertexRoles roles_;
   BoundarySlider* slider_;
   long long connectivityVersion_ = 0;
+  int checksSinceFlipSearch_ = 0;  // FlowOptions::flipInterval
   bool evaluated_ = false;          // geometry and curvature of the current positions
   bool geometryEvaluated_ = false;  // geometry (and active areas) only
   bool energyEvaluated_ = false;    // the energy is computed when asked for, not at every explicit step
