@@ -4,8 +4,9 @@
 // triangulate_refine_and_fair_hole, and score both against the surface that was cut away.
 //
 //   restoration_sweep MESH --center X Y Z --edges N1,N2,... [--subdivide L] [--name NAME] [--write-dir DIR]
+//                     [--shape-tol T]
 //
-// --subdivide L refines the mesh L times 1-to-4 first (midpoints: the shape stays the scan's), so
+// --shape-tol T sets the fill flow's FlowOptions::shapeTolerance (default: the fill's). --subdivide L refines the mesh L times 1-to-4 first (midpoints: the shape stays the scan's), so
 // that holes of thousands of border edges fit in it. Prints one Markdown table row per size:
 // border edges (as cut), new vertices, time (best of runs within a second, one run above it),
 // smallest patch angle and the bound the border itself sets (its smallest corner inside the hole),
@@ -74,12 +75,13 @@ Score score(const test::Cut& cut, const std::function<void(TriMesh&)>& fill, dou
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s MESH --center X Y Z --edges N1,N2,... [--subdivide L] [--name NAME] [--write-dir DIR]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s MESH --center X Y Z --edges N1,N2,... [--subdivide L] [--name NAME] [--write-dir DIR] [--shape-tol T]\n", argv[0]);
     return 2;
   }
   Vec3 center = Vec3::Zero();
   std::vector<int> sizes;
   int subdivide = 0;
+  double shapeTolerance = HoleFillOptions::defaultFillFlow().shapeTolerance;
   std::string name = argv[1], writeDir;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -93,6 +95,8 @@ int main(int argc, char** argv) {
       subdivide = std::atoi(argv[++i]);
     } else if (a == "--name" && i + 1 < argc) {
       name = argv[++i];
+    } else if (a == "--shape-tol" && i + 1 < argc) {
+      shapeTolerance = std::atof(argv[++i]);
     } else if (a == "--write-dir" && i + 1 < argc) {
       writeDir = argv[++i];
     } else {
@@ -117,6 +121,7 @@ int main(int argc, char** argv) {
     TriMesh ours, theirs;
     HoleFillOptions opt;
     opt.maxHoleEdges = 1000000;
+    opt.flow.shapeTolerance = shapeTolerance;
     HoleFillReport report;
     const Score e = score(cut, [&](TriMesh& m) { report = fillHoles(m, opt); }, diagonal, ours);
     double bound = 180;

@@ -234,6 +234,13 @@ TEST(Flow, LimitsCancellationAndErrors) {
   FlowOptions bad = explicitOptions();
   bad.stepFactor = -1;
   EXPECT_THROW(fair(m, bad), InvalidInputError);
+  bad = FlowOptions{};
+  bad.maxJump = 0;
+  EXPECT_THROW(fair(m, bad), InvalidInputError);
+  bad = FlowOptions{};
+  bad.flipInterval = 0;
+  EXPECT_THROW(fair(m, bad), InvalidInputError);
+  EXPECT_EQ(m.positions, noisy.positions);
 }
 
 // A limit reached just as a stage reaches its plateau ends the run there: no subdivision into a

@@ -140,6 +140,13 @@ struct FlowOptions {
   /// took 62 steps, 24 from the shape scale, to the same energy within 0.2 %. A step too large is
   /// rejected and halved as any other.
   bool startAtShapeScale = false;
+  /// Semi-implicit: a step is rejected if a vertex moves along its normal by more than this many
+  /// of its mean edge lengths (folds, the energy and crossings judge every step too). 0.5 made
+  /// the steps a torus needs grow with its resolution. The distance a hole's patch travels from
+  /// its bi-Laplace start grows with the hole, in edge lengths (its steps' largest moves summed
+  /// to about 17 on a 406-edge hole, at up to 1.9 a step), so the fill allows more
+  /// (HoleFillOptions::defaultFillFlow).
+  double maxJump = 2;
   /// Semi-implicit: tangential drift passes (ε = driftFactor · A_min each) after an accepted step.
   int driftPasses = 2;
 

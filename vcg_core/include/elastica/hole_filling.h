@@ -63,6 +63,9 @@ struct HoleFillOptions {
     f.shapeTolerance = 1e-3;
     f.startAtShapeScale = true;
     f.remesh = false;  // the fill has its own refinement and remeshing stages, made for a patch
+    // A patch may move 10 edge lengths a step (fair: 2): a 406-edge hole in the armadillo
+    // (refined once) took 12 steps instead of 36, 0.84 s instead of 1.30 s, to E 102.547 (102.545).
+    f.maxJump = 10;
     return f;
   }
 };

@@ -55,6 +55,7 @@ void validate(const FlowOptions& o) {
   if (o.maxSteps < 0 || !(o.maxSeconds >= 0)) bad("maxSteps and maxSeconds must be >= 0");
   if (o.checkInterval < 1) bad("checkInterval must be >= 1");
   if (o.flipInterval < 1) bad("flipInterval must be >= 1");
+  if (!(o.maxJump > 0)) bad("maxJump must be > 0");
   if (o.driftPasses < 0) bad("driftPasses must be >= 0");
   if (o.scheme == Scheme::SemiImplicit && o.flow == FlowType::Bilaplacian)
     bad("the bilaplacian flow has the explicit scheme only");

@@ -14,10 +14,8 @@
 namespace elastica {
 namespace {
 
-// Acceptance: a vertex may move at most this many of its mean edge lengths (0.5 made the steps a
-// torus needs grow with its resolution; folds, energy and crossings still judge every step)...
-constexpr double kMaxJump = 2.0;
-// ...and the energy may not rise by more than this (relative): stricter stalls at the noise floor.
+// Acceptance: a vertex may move at most FlowOptions::maxJump of its mean edge lengths, and the
+// energy may not rise by more than this (relative): stricter stalls at the noise floor.
 constexpr double kEnergySlack = 1e-4;
 
 }  // namespace
@@ -94,7 +92,7 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
     double ring = 0;
     for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k)
       ring += (saved_[topo.ringVertex(k)] - saved_[v]).norm();
-    if (std::abs(delta[r]) > kMaxJump * ring / std::max(1, topo.valence(v))) return reject();
+    if (std::abs(delta[r]) > state.options().maxJump * ring / std::max(1, topo.valence(v))) return reject();
     positions[v] += delta[r] * geo.vertexNormal[v];
     largest = std::max(largest, std::abs(delta[r]));
   }

@@ -1,7 +1,7 @@
 // The semi-implicit scheme (ours; the paper's future work): linearly implicit in the stiff
 // fourth-order part, (M + τ/2 C M⁻¹ C) δ = τ M F for the normal displacement δ, everything else
 // lagged (semi_implicit_system.h). A step is accepted only if no active face turns over, no vertex
-// jumps more than two of its mean edge lengths, (elastica) the energy does not rise and, with the
+// jumps more than FlowOptions::maxJump of its mean edge lengths, (elastica) the energy does not rise and, with the
 // embedding guard on, no moved face crosses another; tangential drift passes follow under the
 // same rules (the energy before the step as the limit).
 #pragma once
