@@ -51,8 +51,11 @@ for t in "${targets[@]}"; do
   runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   secs=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)
   cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1)
-  crashes=$(find $build/artifacts -name "$t-*" | wc -l)
-  printf '%s: %s executions in %s s, %s, corpus %s files, %s crash artifacts\n' \
-    "$t" "${runs:-?}" "${secs:-?}" "${cov:-cov: ?}" "$(find "$corpus" -type f | wc -l)" "$crashes" | tee -a "$summary"
+  # libFuzzer names an artifact by what it found: crash-, leak-, timeout- and oom- inputs fail the
+  # run; slow-unit- inputs (slower than -report_slow_units, 10 s) are kept for a look only.
+  crashes=$(find $build/artifacts \( -name "$t-crash-*" -o -name "$t-leak-*" -o -name "$t-timeout-*" -o -name "$t-oom-*" \) | wc -l)
+  slow=$(find $build/artifacts -name "$t-slow-unit-*" | wc -l)
+  printf '%s: %s executions in %s s, %s, corpus %s files, %s failing inputs, %s slow inputs (not failures)\n' \
+    "$t" "${runs:-?}" "${secs:-?}" "${cov:-cov: ?}" "$(find "$corpus" -type f | wc -l)" "$crashes" "$slow" | tee -a "$summary"
 done
 exit $failed
