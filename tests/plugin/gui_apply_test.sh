@@ -11,9 +11,10 @@
 #   gui_apply_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR DATA_DIR ARTEFACT_DIR
 set -euo pipefail
 prefix_script=$1 plugin=$2 prefix=$3 data=$4 artefacts=$5
-source "$(dirname "$0")/gui_lib.sh"   # fail, wait_window
+source "$(dirname "$0")/gui_lib.sh"   # fail, wait_display, wait_window
 [[ -n "${DISPLAY:-}" ]] || fail "no X display (run under xvfb-run -a)"
 for tool in xdotool import; do command -v $tool >/dev/null || fail "$tool not installed (scripts/setup.sh)"; done
+wait_display
 "$prefix_script" --prefix "$prefix" "$plugin" >/dev/null
 mkdir -p "$artefacts"
 home=$(mktemp -d)  # MeshLab writes its settings under $HOME

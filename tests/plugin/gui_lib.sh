@@ -1,7 +1,18 @@
-# Shared by the GUI tests (sourced): fail, and wait_window for MeshLab's windows under Xvfb.
+# Shared by the GUI tests (sourced): fail, wait_display for Xvfb, and wait_window for MeshLab's windows.
 # The sourcing script sets meshlab_pid once MeshLab runs.
 
 fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
+
+# Waits up to 15 s for the X server on $DISPLAY to answer. xvfb-run starts Xvfb and runs the test
+# at once; on a loaded machine MeshLab once started first and died with "could not connect to
+# display :105" (the next run of the same test passed).
+wait_display() {
+  local deadline=$((SECONDS + 15))
+  until xdotool getdisplaygeometry >/dev/null 2>&1; do
+    ((SECONDS < deadline)) || fail "the X server on $DISPLAY did not answer within 15 s"
+    sleep 0.2
+  done
+}
 
 # Polls `xdotool search --name PATTERN` for up to $2 seconds; prints the first window id. Fails
 # if MeshLab (meshlab_pid) exits meanwhile.
