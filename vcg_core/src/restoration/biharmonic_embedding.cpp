@@ -8,9 +8,33 @@
 #include <Eigen/SparseCholesky>
 
 #include <cmath>
+#include <optional>
 
 namespace elastica {
 namespace {
+
+// A X = B for the SPD matrix A, or nothing if A does not factor as one. Large patches go to
+// CHOLMOD's supernodal Cholesky (a 6,000-vertex patch: 0.57 s for its two solves with
+// SimplicialLDLT), which fails on a matrix that is not positive definite; the LDLᵀ of small ones
+// also factors an indefinite matrix (negative cotangents), whose negative pivot rejects it.
+std::optional<Eigen::MatrixXd> solveSpd(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B) {
+  if (A.rows() >= SpdSolver::kCholmodMinRows && SpdSolver::cholmodAvailable()) {
+    SpdSolver spd(SpdBackend::Cholmod);
+    if (!spd.factorize(A)) return std::nullopt;
+    Eigen::MatrixXd x(B.rows(), B.cols());
+    Eigen::VectorXd column;
+    for (int c = 0; c < B.cols(); ++c) {
+      spd.solve(B.col(c), column);
+      x.col(c) = column;
+    }
+    return x;
+  }
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+  if (ldlt.info() != Eigen::Success || (ldlt.vectorD().array() <= 0).any()) return std::nullopt;
+  Eigen::MatrixXd x = ldlt.solve(B);
+  if (ldlt.info() != Eigen::Success) return std::nullopt;
+  return x;
+}
 
 // One solve of (C M⁻¹ C)_ff x_f = −(C M⁻¹ C)_fk x_k. Returns false if the system is not SPD enough
 // to factor or the solution is not finite.
@@ -54,31 +78,10 @@ bool solveOnce(TriMesh& mesh, const Topology& topo, const std::vector<std::uint8
   }
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(trip.begin(), trip.end());
-  // Large patches: CHOLMOD's supernodal Cholesky, which fails on a matrix that is not positive
-  // definite (a 6,000-vertex patch: 0.57 s for its two solves with SimplicialLDLT).
-  if (n >= SpdSolver::kCholmodMinRows && SpdSolver::cholmodAvailable()) {
-    SpdSolver spd(SpdBackend::Cholmod);
-    if (!spd.factorize(A)) return false;
-    Eigen::MatrixXd x(n, 3);
-    for (int c = 0; c < 3; ++c) {
-      Eigen::VectorXd column;
-      spd.solve(rhs.col(c), column);
-      x.col(c) = column;
-    }
-    if (!x.allFinite()) return false;
-    for (int v = 0; v < nv; ++v)
-      if (row[v] >= 0) mesh.positions[v] = x.row(row[v]).transpose();
-    return true;
-  }
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-  if (ldlt.info() != Eigen::Success) return false;
-  // An indefinite system (negative cotangents) factors but has a negative pivot: reject it too.
-  if ((ldlt.vectorD().array() <= 0).any()) return false;
-  const Eigen::MatrixXd x = ldlt.solve(rhs);
-  if (ldlt.info() != Eigen::Success || !x.allFinite()) return false;
-  for (int v = 0; v < nv; ++v) {
-    if (row[v] >= 0) mesh.positions[v] = x.row(row[v]).transpose();
-  }
+  const std::optional<Eigen::MatrixXd> x = solveSpd(A, rhs);
+  if (!x || !x->allFinite()) return false;
+  for (int v = 0; v < nv; ++v)
+    if (row[v] >= 0) mesh.positions[v] = x->row(row[v]).transpose();
   return true;
 }
 

@@ -120,23 +120,9 @@ Outline outlineOf(const std::vector<Vec3>& positions, const HoleLoop& loop) {
     o.hi = o.hi.cwiseMax(positions[v]);
   }
   o.centroid /= n;
-  for (int i = 0; i < n; ++i)
-    o.normal += (positions[loop.vertices[i]] - o.centroid).cross(positions[loop.vertices[(i + 1) % n]] - o.centroid);
-  if (o.normal.norm() > 0) o.normal.normalize();
+  o.normal = polygonNormal(positions, loop.vertices);
   for (int v : loop.vertices) o.radius = std::max(o.radius, (positions[v] - o.centroid).norm());
   return o;
-}
-
-// The winding number of `outer`'s loop around point p, seen along the outline's normal.
-double windingAround(const std::vector<Vec3>& positions, const HoleLoop& outer, const Outline& o, const Vec3& p) {
-  const Vec3 u = o.normal.unitOrthogonal(), w = o.normal.cross(u);
-  double turn = 0;
-  const int n = outer.edgeCount();
-  for (int i = 0; i < n; ++i) {
-    const Vec3 a = positions[outer.vertices[i]] - p, b = positions[outer.vertices[(i + 1) % n]] - p;
-    turn += std::atan2(a.dot(u) * b.dot(w) - a.dot(w) * b.dot(u), a.dot(u) * b.dot(u) + a.dot(w) * b.dot(w));
-  }
-  return turn / (2 * std::acos(-1.0));
 }
 
 // The vertices of the piece of the mesh that holds `seed`, or nothing if it has more than `limit`
@@ -159,6 +145,24 @@ std::optional<std::unordered_set<int>> pieceOf(const TriMesh& mesh, const Vertex
 
 }  // namespace
 
+Vec3 polygonNormal(const std::vector<Vec3>& positions, const std::vector<int>& vertices) {
+  Vec3 area = Vec3::Zero();
+  const std::size_t n = vertices.size();
+  for (std::size_t i = 0; i < n; ++i) area += positions[vertices[i]].cross(positions[vertices[(i + 1) % n]]);
+  return area.norm() > 0 ? Vec3(area.normalized()) : Vec3::Zero();
+}
+
+double windingNumber(const std::vector<Vec3>& positions, const std::vector<int>& vertices, const Vec3& normal, const Vec3& p) {
+  const Vec3 u = normal.unitOrthogonal(), w = normal.cross(u);
+  double turn = 0;
+  const std::size_t n = vertices.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 a = positions[vertices[i]] - p, b = positions[vertices[(i + 1) % n]] - p;
+    turn += std::atan2(a.dot(u) * b.dot(w) - a.dot(w) * b.dot(u), a.dot(u) * b.dot(u) + a.dot(w) * b.dot(w));
+  }
+  return turn / (2 * std::acos(-1.0));
+}
+
 std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<HoleLoop>& loops) {
   const int n = static_cast<int>(loops.size());
   std::vector<int> holeOf(n, -1);
@@ -173,7 +177,7 @@ std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adja
       // Inside the hole's box (grown by its radius), near its mean plane, within its outline.
       if ((island.lo - hole.lo).minCoeff() < -hole.radius || (hole.hi - island.hi).minCoeff() < -hole.radius) continue;
       if (std::abs((island.centroid - hole.centroid).dot(hole.normal)) > hole.radius) continue;
-      if (std::abs(windingAround(mesh.positions, loops[j], hole, island.centroid)) < 0.5) continue;
+      if (std::abs(windingNumber(mesh.positions, loops[j].vertices, hole.normal, island.centroid)) < 0.5) continue;
       // A separate piece, no larger than a disc of the hole's size could hold, with no other border.
       const std::size_t limit = 4 * static_cast<std::size_t>(loops[j].edgeCount()) * loops[j].edgeCount() + 64;
       const auto piece = pieceOf(mesh, adjacency, loops[i].vertices[0], limit);

@@ -43,6 +43,14 @@ std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFac
 ///         repeats a vertex (the message names the face): what boundaryHalfEdges needs.
 void checkFaceIndices(const TriMesh& mesh);
 
+/// The unit area vector (Newell's normal) of the closed polygon through `vertices`, or zero if the
+/// polygon has no area seen from any side (a tube's cut, a loop folded onto itself).
+Vec3 polygonNormal(const std::vector<Vec3>& positions, const std::vector<int>& vertices);
+
+/// The winding number of the closed polygon through `vertices` around `p`, both seen along
+/// `normal` (a unit vector): ±1 inside a simple polygon, 0 outside.
+double windingNumber(const std::vector<Vec3>& positions, const std::vector<int>& vertices, const Vec3& normal, const Vec3& p);
+
 /// Islands: for each loop, the index of the loop in whose hole it lies as the border of an island
 /// (a separate piece of the mesh whose only border it is, as a scanner leaves a fragment floating in
 /// a gap: inside the hole's outline seen along the hole's mean normal, and nearer the hole than the

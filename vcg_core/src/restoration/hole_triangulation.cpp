@@ -1,6 +1,7 @@
 #include "restoration/hole_triangulation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <unordered_set>
 
@@ -126,12 +127,10 @@ constexpr int kLiepaEdges = 100;
 // across a notch of a jagged border, or across the gap of a C-shaped hole).
 class Shadow {
  public:
-  Shadow(const std::vector<Vec3>& positions, const std::vector<int>& v) {
-    Vec3 area = Vec3::Zero();
-    for (std::size_t k = 0; k < v.size(); ++k) area += positions[v[k]].cross(positions[v[(k + 1) % v.size()]]);
-    if (!(area.norm() > 0)) return;  // a tube's cut: no side to look from
-    const Vec3 n = area.normalized();
-    const Vec3 u = n.unitOrthogonal(), w = n.cross(u);
+  Shadow(const std::vector<Vec3>& positions, const std::vector<int>& v)
+      : positions_(positions), v_(v), normal_(polygonNormal(positions, v)) {
+    if (normal_.isZero()) return;  // a tube's cut: no side to look from
+    const Vec3 u = normal_.unitOrthogonal(), w = normal_.cross(u);
     for (int x : v) q_.emplace_back(positions[x].dot(u), positions[x].dot(w));
   }
   bool available() const { return !q_.empty(); }
@@ -154,18 +153,15 @@ class Shadow {
       if (k == i || k == j || l == i || l == j) continue;
       if (side(a, b, q_[k]) * side(a, b, q_[l]) < 0 && side(q_[k], q_[l], a) * side(q_[k], q_[l], b) < 0) return false;
     }
-    const Eigen::Vector2d m = 0.5 * (a + b);  // inside: an odd number of border crossings to its right
-    bool odd = false;
-    for (int k = 0; k < n; ++k) {
-      const Eigen::Vector2d& p = q_[k];
-      const Eigen::Vector2d& r = q_[(k + 1) % n];
-      if ((p.y() > m.y()) != (r.y() > m.y()) && m.x() < p.x() + (m.y() - p.y()) / (r.y() - p.y()) * (r.x() - p.x())) odd = !odd;
-    }
-    return odd;
+    const Vec3 mid = 0.5 * (positions_[v_[i]] + positions_[v_[j]]);
+    return std::abs(windingNumber(positions_, v_, normal_, mid)) >= 0.5;
   }
 
  private:
-  std::vector<Eigen::Vector2d> q_;
+  const std::vector<Vec3>& positions_;
+  const std::vector<int>& v_;
+  Vec3 normal_;
+  std::vector<Eigen::Vector2d> q_;  // the vertices seen along normal_
 };
 
 // Triangulates `poly`: Liepa's search if it is small enough, else the polygon is cut in two along

@@ -19,9 +19,10 @@ double cosCorner(const Vec3& at, const Vec3& a, const Vec3& b) {
   return n > 0 ? u.dot(v) / n : 1;
 }
 
+double degreesOfCos(double cosine) { return std::acos(std::clamp(cosine, -1.0, 1.0)) * 180 / std::acos(-1.0); }
+
 double smallestAngle(const Vec3& a, const Vec3& b, const Vec3& c) {
-  const double largestCos = std::max({cosCorner(a, b, c), cosCorner(b, c, a), cosCorner(c, a, b)});
-  return std::acos(std::clamp(largestCos, -1.0, 1.0)) * 180 / std::acos(-1.0);
+  return degreesOfCos(std::max({cosCorner(a, b, c), cosCorner(b, c, a), cosCorner(c, a, b)}));
 }
 
 // Ears thinner than this are split (the 25° of issue 15).
@@ -171,7 +172,7 @@ class PatchAngles {
       if (faceNormal(q[0], q[1], q[2]).dot(normal) <= 0) return -1;
       largestCos = std::max({largestCos, cosCorner(q[0], q[1], q[2]), cosCorner(q[1], q[2], q[0]), cosCorner(q[2], q[0], q[1])});
     }
-    return std::acos(std::clamp(largestCos, -1.0, 1.0)) * 180 / std::acos(-1.0);
+    return degreesOfCos(largestCos);
   }
 
   // Flips edge (a, b) between f = (a, b, c) and g = (b, a, d) into (a, d, c), (b, c, d) if that
@@ -187,7 +188,6 @@ class PatchAngles {
     if (faceNormal(pa, pd, pc).dot(n) <= 0 || faceNormal(pb, pc, pd).dot(n) <= 0) return false;
     m_.faces[f] = {a, d, c};
     m_.faces[g] = {b, c, d};
-    auto drop = [&](int v, int face) { faces_[v].erase(std::find(faces_[v].begin(), faces_[v].end(), face)); };
     drop(a, g);
     drop(b, f);
     faces_[c].push_back(g);
@@ -210,7 +210,6 @@ class PatchAngles {
     m_.faces.push_back({m, a, d});
     patch_.push_back(1);
     patch_.push_back(1);
-    auto drop = [&](int v, int face) { faces_[v].erase(std::find(faces_[v].begin(), faces_[v].end(), face)); };
     drop(b, f);
     drop(a, g);
     faces_[b].push_back(f2);
@@ -219,6 +218,9 @@ class PatchAngles {
     faces_[d].push_back(g2);
     faces_[m] = {f, g, f2, g2};
   }
+
+  // Face `face` no longer has corner v.
+  void drop(int v, int face) { faces_[v].erase(std::find(faces_[v].begin(), faces_[v].end(), face)); }
 
   // The vertex of face f that is neither a nor b.
   int third(int f, int a, int b) const {
