@@ -226,7 +226,9 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
     lastTau = accepted;
     // Grow, but stay below the last step that failed, probing upward slowly: a plain ×1.5 / ×0.5
     // controller settles where a third of the attempts fail (ln 1.5 / ln 3), each a wasted solve.
-    tau = std::min(tau * kGrow, kCeilingMargin * ceiling);
+    // A shortened step (FlowOptions::shortenJumps) went as far as a step may: a larger τ would
+    // only be shortened again.
+    if (!integrator.lastStepShortened()) tau = std::min(tau * kGrow, kCeilingMargin * ceiling);
     ceiling *= kCeilingGrow;
     const double energy = state.energy();
     if (run.record(state, stage.level, energy)) return;

@@ -84,7 +84,8 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   const double energyBefore = state.energy();
   const double energyLimit = energyBefore * (1 + kEnergySlack) + 1e-12;
   faceNormalBefore_ = geo.faceNormal;
-  double largest = 0;
+  // The largest jump, as a multiple of what FlowOptions::maxJump allows at its vertex.
+  double overshoot = 0;
   for (int v = 0; v < nv; ++v) {
     const int r = freeIndex_[v];
     if (r < 0) continue;
@@ -92,9 +93,19 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
     double ring = 0;
     for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k)
       ring += (saved_[topo.ringVertex(k)] - saved_[v]).norm();
-    if (std::abs(delta[r]) > state.options().maxJump * ring / std::max(1, topo.valence(v))) return reject();
-    positions[v] += delta[r] * geo.vertexNormal[v];
-    largest = std::max(largest, std::abs(delta[r]));
+    const double allowed = state.options().maxJump * ring / std::max(1, topo.valence(v));
+    if (delta[r] != 0) overshoot = std::max(overshoot, std::abs(delta[r]) / allowed);
+  }
+  if (!std::isfinite(overshoot)) return reject();  // a vertex whose edges have no length moves
+  lastStepShortened_ = overshoot > 1;
+  if (lastStepShortened_ && !state.options().shortenJumps) return reject();
+  const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;
+  double largest = 0;
+  for (int v = 0; v < nv; ++v) {
+    const int r = freeIndex_[v];
+    if (r < 0) continue;
+    positions[v] += scale * delta[r] * geo.vertexNormal[v];
+    largest = std::max(largest, scale * std::abs(delta[r]));
   }
   state.invalidate();
   if (!acceptable(state, energyLimit)) return reject();

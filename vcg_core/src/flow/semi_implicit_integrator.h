@@ -25,6 +25,9 @@ class SemiImplicitIntegrator {
   /// How much the last accepted step's normal displacement lowered the energy (its drift passes
   /// not counted: they even out triangles and may move E either way).
   double lastEnergyDecrease() const { return lastEnergyDecrease_; }
+  /// Whether the last attempt would have moved a vertex farther than FlowOptions::maxJump (with
+  /// FlowOptions::shortenJumps, the accepted step was shortened to it).
+  bool lastStepShortened() const { return lastStepShortened_; }
   /// Rejects a step after which (with its drift passes) an active face crosses another face
   /// (mesh/self_intersection.h). Off by default: an input whose faces already cross has nothing to keep.
   void guardEmbedding(bool on) { guardEmbedding_ = on; }
@@ -41,6 +44,7 @@ class SemiImplicitIntegrator {
   bool driftPass(FlowState& state, double energyLimit);
 
   double lastNormalStep_ = 0, lastEnergyDecrease_ = 0;
+  bool lastStepShortened_ = false;
   bool guardEmbedding_ = false;
   long long crossingRejections_ = 0;
   long long connectivityVersion_ = -1;  // of the state that freeIndex_ and the solver were built for
