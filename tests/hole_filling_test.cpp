@@ -341,5 +341,43 @@ TEST(HoleFilling, NonManifoldInputIsRefusedUnchanged) {
   EXPECT_EQ(mesh.faces, before.faces);
 }
 
+// The border's bound at a corner between edges of equal length below 60°: the ear (isosceles, its
+// other angles larger) holds the whole corner, so the bound is the corner itself.
+TEST(BorderCornerBound, EqualEdgesAllowTheCornerItself) {
+  const double deg = std::acos(-1.0) / 180;
+  for (double theta : {10.0, 25.0, 40.0, 59.0}) EXPECT_NEAR(cornerBound(1.0, 1.0, theta * deg), theta * deg, 1e-12) << theta;
+  EXPECT_NEAR(cornerBound(2.5, 2.5, 40 * deg), 40 * deg, 1e-12);  // lengths scale out
+}
+
+// Unequal edges: against an independent search in the corner's plane, over apex points on a
+// fine polar grid, the triangles' angles measured from their vertices (not the law of sines).
+TEST(BorderCornerBound, MatchesAPlanarSearchOverApexPoints) {
+  const double pi = std::acos(-1.0), deg = pi / 180;
+  auto smallestAngle = [](const Vec3& p, const Vec3& q, const Vec3& r) {
+    auto at = [](const Vec3& o, const Vec3& x, const Vec3& y) { return std::atan2((x - o).cross(y - o).norm(), (x - o).dot(y - o)); };
+    return std::min({at(p, q, r), at(q, r, p), at(r, p, q)});
+  };
+  struct Corner {
+    double a, b, theta;
+  };
+  // The first: a 39° corner between a border edge of 0.10 and one of 0.39 (the armadillo's
+  // 794-edge hole): its ear has 11.7°.
+  for (const Corner& c : {Corner{0.1007, 0.3864, 39.23}, Corner{1, 2, 30}, Corner{1, 10, 50}, Corner{1, 1.5, 80}}) {
+    const Vec3 v(0, 0, 0), u(c.a, 0, 0), w = c.b * Vec3(std::cos(c.theta * deg), std::sin(c.theta * deg), 0);
+    double best = std::max(smallestAngle(u, v, w), c.theta * deg / 3);
+    for (int i = 1; i < 400; ++i) {
+      const double phi = c.theta * deg * i / 400;
+      for (int j = 0; j < 400; ++j) {
+        const double r = std::min(c.a, c.b) / 8 * std::pow(64 * std::max(c.a, c.b) / std::min(c.a, c.b), j / 399.0);
+        const Vec3 x = r * Vec3(std::cos(phi), std::sin(phi), 0);
+        best = std::max(best, std::min(smallestAngle(u, v, x), smallestAngle(v, w, x)));
+      }
+    }
+    const double bound = cornerBound(c.a, c.b, c.theta * deg);
+    EXPECT_NEAR(bound / deg, best / deg, 0.05) << c.a << " " << c.b << " " << c.theta;
+    EXPECT_LE(bound, c.theta * deg + 1e-12);
+  }
+}
+
 }  // namespace
 }  // namespace elastica

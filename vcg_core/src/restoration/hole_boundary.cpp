@@ -201,6 +201,39 @@ double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v) 
   return sum;
 }
 
+double cornerBound(double a, double b, double theta) {
+  const double pi = std::acos(-1.0);
+  // The smallest angle of a triangle with sides p and q from v and the angle `at` between them.
+  auto smallest = [pi](double p, double q, double at) {
+    const double far = std::atan2(q * std::sin(at), p - q * std::cos(at));  // at p's far end
+    return std::min({at, far, pi - at - far});
+  };
+  double best = std::max(smallest(a, b, theta), theta / 3);  // the ear; three faces or more
+  // Two faces (u, v, x) and (v, w, x): search the apex x by the angle β it leaves at v on a's side
+  // and its distance d from v (log scale), on a grid refined three times around its best point.
+  const double lo = std::log(std::min(a, b) / 8), hi = std::log(std::max(a, b) * 8);
+  double beta = theta / 2, logD = 0.5 * (lo + hi), spanBeta = theta / 2, spanD = 0.5 * (hi - lo);
+  constexpr int kGrid = 16;
+  for (int round = 0; round < 4; ++round) {
+    double bestHere = -1, bestBeta = beta, bestLogD = logD;
+    for (int i = -kGrid; i <= kGrid; ++i) {
+      const double bt = beta + spanBeta * i / kGrid;
+      if (!(bt > 0 && bt < theta)) continue;
+      for (int j = -kGrid; j <= kGrid; ++j) {
+        const double ld = logD + spanD * j / kGrid, d = std::exp(ld);
+        const double m = std::min(smallest(a, d, bt), smallest(b, d, theta - bt));
+        if (m > bestHere) bestHere = m, bestBeta = bt, bestLogD = ld;
+      }
+    }
+    best = std::max(best, bestHere);
+    beta = bestBeta;
+    logD = bestLogD;
+    spanBeta *= 2.0 / kGrid;
+    spanD *= 2.0 / kGrid;
+  }
+  return best;
+}
+
 double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLoop& loop, const std::function<double(int)>& meshAngle) {
   const double pi = std::acos(-1.0);
   double bound = pi;
@@ -208,7 +241,10 @@ double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLo
   for (int i = 0; i < n; ++i) {
     const int v = loop.vertices[i], u = loop.vertices[(i + n - 1) % n], w = loop.vertices[(i + 1) % n];
     if (2 * pi - meshAngle(v) >= pi) continue;  // a reflex corner of the hole: a patch fans it out
-    bound = std::min(bound, angleBetween(positions[u] - positions[v], positions[w] - positions[v]));
+    const Vec3 toU = positions[u] - positions[v], toW = positions[w] - positions[v];
+    const double theta = angleBetween(toU, toW);
+    if (theta >= bound) continue;  // cornerBound is at most theta: this corner cannot lower the bound
+    bound = std::min(bound, cornerBound(toU.norm(), toW.norm(), theta));
   }
   return bound * 180 / pi;
 }

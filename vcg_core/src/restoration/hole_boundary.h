@@ -63,10 +63,17 @@ std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adja
 /// their corner angles there.
 double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v);
 
+/// The largest smallest angle (radians) that patch faces at a border corner can have, in the
+/// corner's plane: the corner's angle `theta` lies between border edges of lengths `a` and `b`, and
+/// the faces there either hold it whole (the ear on both edges, whose other angles follow from a,
+/// b and theta: 11.7° for a 39° corner between edges of 1 and 3.8), split it between two faces
+/// sharing an apex (the best apex, searched), or split it among three or more (theta/3 at most).
+/// At most theta; theta itself for a corner below 60° between edges of equal length.
+double cornerBound(double a, double b, double theta);
+
 /// The smallest angle any patch of `loop` can have, in degrees, as far as its border decides: the
-/// smallest angle between two consecutive border edges at a corner that the hole's side sees as
-/// convex (the mesh's own faces there span more than 180°). A patch face holding that corner has
-/// at most that angle; a fan of several faces there only splits it. 180 when no corner is convex.
+/// smallest cornerBound() over the corners that the hole's side sees as convex (the mesh's own
+/// faces there span more than 180°). 180 when no corner is convex.
 /// `meshAngle(v)`: the angle the mesh's own faces span at v, in radians (cornerAngleSum).
 double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLoop& loop,
                                 const std::function<double(int)>& meshAngle);

@@ -243,7 +243,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
       // After the flow only what is below the target: moving vertices that are fine already
       // undoes the flow's work (a small hole on CGAL's elephant went from E 20.2 to 23.8).
       if (smallestAngleDegrees(sub, patchFace) < kTargetAngleDegrees)
-        improvePatchAngles(sub, patchFace, sigma, firstNew, kTargetAngleDegrees);
+        improvePatchAngles(sub, patchFace, sigma, firstNew, kTargetAngleDegrees, 8, true);
     } catch (const FlowDivergedError& e) {
       steps = e.report().steps;
       hole.stop = StopReason::Diverged;

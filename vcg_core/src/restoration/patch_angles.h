@@ -23,8 +23,10 @@ namespace elastica {
 /// points are appended (`sigma` gets the mean of the edge's ends), their faces appended flagged.
 /// Vertices whose faces all have angles of `goodEnoughDegrees` or more stay where they are (35°
 /// by default: the 25° of issue 15 with a margin, for a patch about to be flowed).
+/// `finishing`: the last pass on a flowed patch; the apexes of border edges are then also placed
+/// by a fine compass search (the best place between two border edges of unequal length).
 /// Returns the number of splits, moves and flips made.
 int improvePatchAngles(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
-                       double goodEnoughDegrees = 35, int passes = 8);
+                       double goodEnoughDegrees = 35, int passes = 8, bool finishing = false);
 
 }  // namespace elastica
