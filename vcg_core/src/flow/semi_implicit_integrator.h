@@ -37,6 +37,8 @@ class SemiImplicitIntegrator {
  private:
   void speed(FlowState& state);
   void buildRows(const FlowState& state);
+  /// δ for the assembled system (into solver_->delta); false if the matrix does not factor.
+  bool solve();
   /// Evaluates the moved positions: no active face turned over since faceNormalBefore_, finite
   /// energy, at most `energyLimit` (elastica).
   bool acceptable(FlowState& state, double energyLimit);

@@ -1,6 +1,8 @@
 #include "flow/spd_solver.h"
 
 #include <Eigen/SparseCholesky>
+
+#include <cmath>
 #ifdef ELASTICA_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
@@ -60,6 +62,7 @@ bool SpdSolver::cholmodAvailable() {
 }
 
 void SpdSolver::analyzePattern(const Eigen::SparseMatrix<double>& A) {
+  factored_ = false;
   impl_->simplicial.reset();
   impl_->supernodal.reset();
   if (impl_->useCholmod(static_cast<int>(A.rows()))) {
@@ -77,10 +80,10 @@ bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   if (impl_->supernodal) {
     OneThreadForCholmod oneThread;
     impl_->supernodal->factorize(A);
-    return impl_->supernodal->info() == Eigen::Success;
+    return factored_ = impl_->supernodal->info() == Eigen::Success;
   }
   impl_->simplicial->factorize(A);
-  return impl_->simplicial->info() == Eigen::Success;
+  return factored_ = impl_->simplicial->info() == Eigen::Success;
 }
 
 void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
@@ -90,6 +93,33 @@ void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
     return;
   }
   x = impl_->simplicial->solve(b);
+}
+
+int SpdSolver::solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                                   double tolerance, int maxIterations) const {
+  if (!factored_ || A.rows() != b.size()) return -1;
+  x.setZero(b.size());
+  Eigen::VectorXd r = b, z, p, Ap;
+  solve(r, z);
+  const double start = r.dot(z);
+  if (!(start > 0)) return start == 0 ? 0 : -1;  // b = 0: x = 0 solves it
+  p = z;
+  double rz = start;
+  for (int k = 1; k <= maxIterations; ++k) {
+    Ap.noalias() = A.selfadjointView<Eigen::Lower>() * p;
+    const double curvature = p.dot(Ap);
+    if (!(curvature > 0)) return -1;
+    const double alpha = rz / curvature;
+    x += alpha * p;
+    r -= alpha * Ap;
+    solve(r, z);
+    const double next = r.dot(z);
+    if (!std::isfinite(next)) return -1;
+    if (next <= tolerance * tolerance * start) return k;
+    p = z + (next / rz) * p;
+    rz = next;
+  }
+  return -1;
 }
 
 const char* SpdSolver::backendName() const {
