@@ -4,9 +4,10 @@
 // triangulate_refine_and_fair_hole, and score both against the surface that was cut away.
 //
 //   restoration_sweep MESH --center X Y Z --edges N1,N2,... [--subdivide L] [--name NAME] [--write-dir DIR]
-//                     [--shape-tol T]
+//                     [--shape-tol T] [--stop-after refinement|biharmonic|flow]
 //
-// --shape-tol T sets the fill flow's FlowOptions::shapeTolerance (default: the fill's). --subdivide L refines the mesh L times 1-to-4 first (midpoints: the shape stays the scan's), so
+// --shape-tol T sets the fill flow's FlowOptions::shapeTolerance (default: the fill's); --stop-after
+// ends the fill after that stage (experiments: how close the bi-Laplace start alone comes). --subdivide L refines the mesh L times 1-to-4 first (midpoints: the shape stays the scan's), so
 // that holes of thousands of border edges fit in it. Prints one Markdown table row per size:
 // border edges (as cut), new vertices, time (best of runs within a second, one run above it),
 // smallest patch angle and the bound the border itself sets (its smallest corner inside the hole),
@@ -75,7 +76,7 @@ Score score(const test::Cut& cut, const std::function<void(TriMesh&)>& fill, dou
 
 int main(int argc, char** argv) {
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s MESH --center X Y Z --edges N1,N2,... [--subdivide L] [--name NAME] [--write-dir DIR] [--shape-tol T]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s MESH --center X Y Z --edges N1,N2,... [--subdivide L] [--name NAME] [--write-dir DIR] [--shape-tol T] [--stop-after refinement|biharmonic|flow]\n", argv[0]);
     return 2;
   }
   Vec3 center = Vec3::Zero();
@@ -83,6 +84,7 @@ int main(int argc, char** argv) {
   int subdivide = 0;
   double shapeTolerance = HoleFillOptions::defaultFillFlow().shapeTolerance;
   std::string name = argv[1], writeDir;
+  FillStage stopAfter = FillStage::Flow;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--center" && i + 3 < argc) {
@@ -97,6 +99,15 @@ int main(int argc, char** argv) {
       name = argv[++i];
     } else if (a == "--shape-tol" && i + 1 < argc) {
       shapeTolerance = std::atof(argv[++i]);
+    } else if (a == "--stop-after" && i + 1 < argc) {
+      const std::string stage = argv[++i];
+      if (stage == "refinement") stopAfter = FillStage::Refinement;
+      else if (stage == "biharmonic") stopAfter = FillStage::Biharmonic;
+      else if (stage == "flow") stopAfter = FillStage::Flow;
+      else {
+        std::fprintf(stderr, "restoration_sweep: --stop-after takes refinement, biharmonic or flow\n");
+        return 2;
+      }
     } else if (a == "--write-dir" && i + 1 < argc) {
       writeDir = argv[++i];
     } else {
@@ -122,6 +133,7 @@ int main(int argc, char** argv) {
     HoleFillOptions opt;
     opt.maxHoleEdges = 1000000;
     opt.flow.shapeTolerance = shapeTolerance;
+    opt.stopAfter = stopAfter;
     HoleFillReport report;
     const Score e = score(cut, [&](TriMesh& m) { report = fillHoles(m, opt); }, diagonal, ours);
     double bound = 180;

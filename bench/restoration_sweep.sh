@@ -2,7 +2,8 @@
 # docs/restoration.md's hole-size sweep: on three real scans from Debian's libcgal-demo data
 # archive (the Stanford bunny as CGAL ships it, the armadillo, a refined elephant), geodesic-disc
 # holes of 20–200 border edges in the scans as shipped, of 400 in the scans refined once (1-to-4 at
-# edge midpoints) and of 800 in the scans refined twice, each filled by `elastica fill`'s default
+# edge midpoints), of 800 in the scans refined twice and of 2,000 in the scans refined three times
+# (1.7–2.8 M vertices; these rows take most of the run's 30–40 minutes), each filled by `elastica fill`'s default
 # and by CGAL's triangulate_refine_and_fair_hole
 # (bench/restoration_sweep.cpp). Rewrites the part of docs/restoration.md between the
 # `<!-- sweep:begin -->` and `<!-- sweep:end -->` markers.
@@ -37,6 +38,7 @@ table=$(mktemp)
     "$bin" "$mesh" --center "$x" "$y" "$z" --edges 20,50,100,200 --name "$name"
     "$bin" "$mesh" --center "$x" "$y" "$z" --edges 400 --subdivide 1 --name "$name"
     "$bin" "$mesh" --center "$x" "$y" "$z" --edges 800 --subdivide 2 --name "$name"
+    "$bin" "$mesh" --center "$x" "$y" "$z" --edges 2000 --subdivide 3 --name "$name"
   done
 } >"$table"
 commit=$(git rev-parse --short HEAD)
