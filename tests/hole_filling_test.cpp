@@ -379,5 +379,21 @@ TEST(BorderCornerBound, MatchesAPlanarSearchOverApexPoints) {
   }
 }
 
+// The hole's bound is the smallest corner bound, including at a corner wider than another
+// corner's bound: here corner A (40° between edges of 1, bound 40°) comes first, and corner B
+// (50.7° between edges of 1 and 2.26, the ear's 25.4° its best) must still lower it. C and D are
+// reflex (the mesh's own faces span less than 180° there) and do not count.
+TEST(BorderCornerBound, AWideCornerBetweenUnequalEdgesLowersTheHolesBound) {
+  const double pi = std::acos(-1.0), deg = pi / 180;
+  const double thetaB = 50.68 * deg;
+  const Vec3 A(0, 0, 0), B(1, 0, 0), C = B + 2.26 * Vec3(-std::cos(thetaB), std::sin(thetaB), 0),
+             D(std::cos(40 * deg), std::sin(40 * deg), 0);
+  HoleLoop loop;
+  loop.vertices = {0, 1, 2, 3};
+  const double bound = borderCornerBoundDegrees({A, B, C, D}, loop, [&](int v) { return v < 2 ? 1.5 * pi : 0.5 * pi; });
+  EXPECT_NEAR(bound, cornerBound(1, 2.26, thetaB) / deg, 1e-9);
+  EXPECT_NEAR(bound, 25.4, 0.1);
+}
+
 }  // namespace
 }  // namespace elastica

@@ -243,7 +243,7 @@ double borderCornerBoundDegrees(const std::vector<Vec3>& positions, const HoleLo
     if (2 * pi - meshAngle(v) >= pi) continue;  // a reflex corner of the hole: a patch fans it out
     const Vec3 toU = positions[u] - positions[v], toW = positions[w] - positions[v];
     const double theta = angleBetween(toU, toW);
-    if (theta >= bound) continue;  // cornerBound is at most theta: this corner cannot lower the bound
+    if (theta / 3 >= bound) continue;  // cornerBound is at least theta/3: this corner cannot lower the bound
     bound = std::min(bound, cornerBound(toU.norm(), toW.norm(), theta));
   }
   return bound * 180 / pi;
