@@ -66,7 +66,7 @@ void SpdSolver::analyzePattern(const Eigen::SparseMatrix<double>& A) {
   impl_->simplicial.reset();
   impl_->supernodal.reset();
   if (impl_->useCholmod(static_cast<int>(A.rows()))) {
-    OneThreadForCholmod oneThread;
+    [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
     impl_->supernodal = std::make_unique<Impl::Supernodal>();
     impl_->supernodal->analyzePattern(A);
   } else {
@@ -78,7 +78,7 @@ void SpdSolver::analyzePattern(const Eigen::SparseMatrix<double>& A) {
 bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   if (!impl_->simplicial && !impl_->supernodal) analyzePattern(A);
   if (impl_->supernodal) {
-    OneThreadForCholmod oneThread;
+    [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
     impl_->supernodal->factorize(A);
     return factored_ = impl_->supernodal->info() == Eigen::Success;
   }
@@ -88,7 +88,7 @@ bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
 
 void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   if (impl_->supernodal) {
-    OneThreadForCholmod oneThread;
+    [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
     x = impl_->supernodal->solve(b);
     return;
   }
