@@ -13,6 +13,7 @@
 // smallest patch angle and the bound the border itself sets (its smallest corner inside the hole),
 // RMS distances patch→truth and truth→patch in % of the bounding-box diagonal.
 #include "geodesic_cut.h"
+#include "guarded_main.h"
 #include "surface_distance.h"
 #ifdef ELASTICA_HAVE_CGAL
 #include "cgal_fill.h"
@@ -74,7 +75,7 @@ Score score(const test::Cut& cut, const std::function<void(TriMesh&)>& fill, dou
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s MESH --center X Y Z --edges N1,N2,... [--subdivide L] [--name NAME] [--write-dir DIR] [--shape-tol T] [--stop-after refinement|biharmonic|flow]\n", argv[0]);
     return 2;
@@ -155,3 +156,5 @@ int main(int argc, char** argv) {
   }
   return 0;
 }
+
+int main(int argc, char** argv) { return bench::guardedMain("restoration_sweep", run, argc, argv); }

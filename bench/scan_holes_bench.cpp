@@ -17,6 +17,7 @@
 // holed mesh: the cutter's own arrays would otherwise stay in the allocator's heap and hide what
 // the fill allocates. The child resets the kernel's peak-RSS mark (/proc/self/clear_refs) just
 // before fillHoles and reads it (VmHWM) just after.
+#include "guarded_main.h"
 #include "surface_distance.h"
 
 #include <elastica/hole_filling.h>
@@ -263,7 +264,7 @@ double field(const std::string& line, const std::string& key) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run(int argc, char** argv) {
   if (argc >= 3 && std::strcmp(argv[1], "--fill") == 0) return fillOnly(argv[2], argc >= 4 ? argv[3] : "");
   if (argc == 2 && std::strcmp(argv[1], "--header") == 0) {
     std::printf("| scan | vertices | holes found / filled | border edges min–max (total) | new vertices | fill s | in holes s | "
@@ -354,3 +355,5 @@ int main(int argc, char** argv) {
               1e6 * field(line, "slope"), mesh, extra, (mesh + extra) / mesh, (mesh + extra) / output, field(line, "openEdges"));
   return 0;
 }
+
+int main(int argc, char** argv) { return bench::guardedMain("scan_holes_bench", run, argc, argv); }
