@@ -10,6 +10,7 @@
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
 #include "restoration/hole_boundary.h"
+#include "restoration/patch_angles.h"
 
 #include <gtest/gtest.h>
 
@@ -393,6 +394,56 @@ TEST(BorderCornerBound, AWideCornerBetweenUnequalEdgesLowersTheHolesBound) {
   const double bound = borderCornerBoundDegrees({A, B, C, D}, loop, [&](int v) { return v < 2 ? 1.5 * pi : 0.5 * pi; });
   EXPECT_NEAR(bound, cornerBound(1, 2.26, thetaB) / deg, 1e-9);
   EXPECT_NEAR(bound, 25.4, 0.1);
+}
+
+// A patch face turned back over the mesh across its border edge: vertex 13 and its faces as the
+// fill of the armadillo's 1,978-edge hole left them (coordinates relative to vertex 13, its
+// neighbours held fixed). Vertex 13 is the apex of four border edges (0–6, 6–4, 4–5, 5–3) and
+// lies outside the 50.7° corner at 5, so its face (5, 13, 3) lies on the mesh's side of edge 5–3,
+// its normal opposite to the mesh face (2, 5, 3) there; the flow cannot move a face back through
+// flat. The angle pass flips it to the corner's ear.
+TEST(PatchAngles, AFaceTurnedBackOverTheMeshIsFlippedAway) {
+  TriMesh m;
+  m.positions = {{0.02216, -0.08061, -0.00952}, {-0.12809, -0.19482, 0.11114}, {-0.15807, -0.06114, 0.12251},
+                 {-0.06789, 0.05956, 0.04586},  {-0.09799, -0.06763, 0.07850}, {-0.00782, 0.05307, 0.00185},
+                 {-0.03792, -0.07412, 0.03449}, {-0.18817, -0.18833, 0.15515}, {0.05099, 0.03496, -0.04638},
+                 {0.12490, -0.12337, -0.08610}, {-0.00525, 0.16128, -0.02428}, {-0.11556, 0.27301, 0.02805},
+                 {0.10398, 0.14337, -0.11157},  {0, 0, 0}};
+  // Vertex 13's faces (the patch), then the faces across their outer edges (held as mesh faces).
+  m.faces = {{0, 13, 6}, {6, 13, 4}, {5, 13, 3}, {3, 13, 10}, {8, 10, 13}, {0, 8, 13}, {5, 4, 13},
+             {0, 6, 1},  {4, 7, 6},  {2, 5, 3},  {10, 11, 3}, {10, 8, 12}, {0, 9, 8},  {4, 5, 2}};
+  std::vector<std::uint8_t> patch(m.faces.size(), 0);
+  std::fill(patch.begin(), patch.begin() + 7, 1);
+  auto normal = [&](const Face& t) {
+    return (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).normalized();
+  };
+  // The most turned pair: a patch face and a mesh face sharing an edge (cosine of their normals).
+  auto mostTurned = [&] {
+    double worst = 1;
+    for (int f = 0; f < m.faceCount(); ++f) {
+      if (!patch[f]) continue;
+      for (int g = 0; g < m.faceCount(); ++g) {
+        if (patch[g]) continue;
+        int shared = 0;
+        for (int x : m.faces[f]) shared += x == m.faces[g][0] || x == m.faces[g][1] || x == m.faces[g][2];
+        if (shared == 2) worst = std::min(worst, normal(m.faces[f]).dot(normal(m.faces[g])));
+      }
+    }
+    return worst;
+  };
+  ASSERT_LT(mostTurned(), -0.99);  // the face as the fill left it: flat against the mesh, reversed
+  std::vector<double> sigma(m.positions.size(), 0.1);
+  improvePatchAngles(m, patch, sigma, 13, 25, 8, true);
+  EXPECT_GT(mostTurned(), -0.5);  // no dihedral angle above 120° at the border
+  // Its faces agree with one another (none turned over inside the patch).
+  for (int f = 0; f < m.faceCount(); ++f)
+    for (int g = 0; g < f; ++g)
+      if (patch[f] && patch[g]) {
+        int shared = 0;
+        for (int x : m.faces[f]) shared += x == m.faces[g][0] || x == m.faces[g][1] || x == m.faces[g][2];
+        if (shared == 2) EXPECT_GT(normal(m.faces[f]).dot(normal(m.faces[g])), 0) << f << " " << g;
+      }
+  EXPECT_GT(smallestAngleDegrees(m, patch), 20);  // the ear on the 50.7° corner: 25.4°
 }
 
 }  // namespace
