@@ -11,6 +11,7 @@
 // that holes of thousands of border edges fit in it. Prints one Markdown table row per size:
 // border edges (as cut), new vertices, time (best of runs within a second, one run above it),
 // smallest patch angle and the bound the border itself sets (its smallest corner inside the hole),
+// patch faces turned back over a neighbour (folds: normals more than 150° apart),
 // RMS distances patch→truth and truth→patch in % of the bounding-box diagonal.
 #include "geodesic_cut.h"
 #include "guarded_main.h"
@@ -27,6 +28,7 @@
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -35,6 +37,8 @@
 #include <functional>
 #include <sstream>
 #include <string>
+#include <unordered_map>
+#include <vector>
 
 using namespace elastica;
 
@@ -48,9 +52,35 @@ void writeMesh(const std::string& path, const TriMesh& m) {
 
 struct Score {
   double ms = 0;
-  int runs = 0, newVertices = 0;
+  int runs = 0, newVertices = 0, turned = 0;
   double angle = 0, there = 0, back = 0;
 };
+
+// Faces from `firstFace` on that lie turned back over a face sharing an edge with them (their
+// normals more than 150° apart): a fold, which no angle or distance shows. (A crease of 120–150°
+// can be the shape: a patch across a thin feature on a coarse mesh has some.)
+int turnedFaces(const TriMesh& m, int firstFace) {
+  const double kFoldCos = -std::sqrt(3.0) / 2;  // cos 150°
+  auto normal = [&](int f) {
+    const Face& t = m.faces[f];
+    return (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).normalized();
+  };
+  auto key = [](int a, int b) { return (static_cast<std::uint64_t>(std::min(a, b)) << 32) | static_cast<std::uint32_t>(std::max(a, b)); };
+  std::unordered_map<std::uint64_t, std::vector<int>> facesOnEdge;  // the new faces' edges
+  for (int f = firstFace; f < m.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) facesOnEdge[key(m.faces[f][k], m.faces[f][(k + 1) % 3])];
+  for (int f = 0; f < m.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto it = facesOnEdge.find(key(m.faces[f][k], m.faces[f][(k + 1) % 3]));
+      if (it != facesOnEdge.end()) it->second.push_back(f);
+    }
+  std::vector<std::uint8_t> turned(m.faces.size(), 0);
+  for (const auto& [edge, faces] : facesOnEdge)
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (normal(faces[i]).dot(normal(faces[j])) < kFoldCos) turned[faces[i]] = turned[faces[j]] = 1;
+  return static_cast<int>(std::count(turned.begin() + firstFace, turned.end(), 1));
+}
 
 Score score(const test::Cut& cut, const std::function<void(TriMesh&)>& fill, double diagonal, TriMesh& result) {
   Score s;
@@ -68,6 +98,7 @@ Score score(const test::Cut& cut, const std::function<void(TriMesh&)>& fill, dou
   const TriMesh patch = bench::facesOf(result, isNew);
   s.newVertices = result.vertexCount() - cut.holed.vertexCount();
   s.angle = smallestAngleDegrees(result, cut.holed.faceCount());
+  s.turned = turnedFaces(result, cut.holed.faceCount());
   s.there = 100 * bench::sampledDistance(patch, cut.truth, 4).rms / diagonal;
   s.back = 100 * bench::sampledDistance(cut.truth, patch, 4).rms / diagonal;
   return s;
@@ -139,11 +170,11 @@ static int run(int argc, char** argv) {
     const Score e = score(cut, [&](TriMesh& m) { report = fillHoles(m, opt); }, diagonal, ours);
     double bound = 180;
     for (const HoleReport& h : report.holes) bound = std::min(bound, h.borderBoundDegrees);
-    std::printf("| %s | %d | %d | %d | %.0f | %.1f° | %.1f° | %.3f %% | %.3f %% |", name.c_str(), full.vertexCount(), cut.borderEdges,
-                e.newVertices, e.ms, e.angle, bound, e.there, e.back);
+    std::printf("| %s | %d | %d | %d | %.0f | %.1f° | %.1f° | %d | %.3f %% | %.3f %% |", name.c_str(), full.vertexCount(), cut.borderEdges,
+                e.newVertices, e.ms, e.angle, bound, e.turned, e.there, e.back);
 #ifdef ELASTICA_HAVE_CGAL
     const Score c = score(cut, [](TriMesh& m) { bench::cgalFillHoles(m); }, diagonal, theirs);
-    std::printf(" %d | %.0f | %.1f | %.1f° | %.3f %% | %.3f %% |", c.newVertices, c.ms, e.ms / c.ms, c.angle, c.there, c.back);
+    std::printf(" %d | %.0f | %.1f | %.1f° | %d | %.3f %% | %.3f %% |", c.newVertices, c.ms, e.ms / c.ms, c.angle, c.turned, c.there, c.back);
 #endif
     std::printf("\n");
     std::fflush(stdout);

@@ -35,8 +35,8 @@ cases=(
 )
 table=$(mktemp)
 {
-  echo "| mesh | vertices | border edges | new vertices | ms | smallest angle | border allows | patch→truth RMS | truth→patch RMS | CGAL new vertices | CGAL ms | time ÷ CGAL's | CGAL smallest angle | CGAL patch→truth | CGAL truth→patch |"
-  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+  echo "| mesh | vertices | border edges | new vertices | ms | smallest angle | border allows | folded faces | patch→truth RMS | truth→patch RMS | CGAL new vertices | CGAL ms | time ÷ CGAL's | CGAL smallest angle | CGAL folded faces | CGAL patch→truth | CGAL truth→patch |"
+  echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   for c in "${cases[@]}"; do
     read -r name mesh x y z big <<<"$c"
     "$bin" "$mesh" --center "$x" "$y" "$z" --edges 20,50,100,200 --name "$name"
