@@ -441,9 +441,63 @@ TEST(PatchAngles, AFaceTurnedBackOverTheMeshIsFlippedAway) {
       if (patch[f] && patch[g]) {
         int shared = 0;
         for (int x : m.faces[f]) shared += x == m.faces[g][0] || x == m.faces[g][1] || x == m.faces[g][2];
-        if (shared == 2) EXPECT_GT(normal(m.faces[f]).dot(normal(m.faces[g])), 0) << f << " " << g;
+        if (shared == 2) {
+          EXPECT_GT(normal(m.faces[f]).dot(normal(m.faces[g])), 0) << f << " " << g;
+        }
       }
   EXPECT_GT(smallestAngleDegrees(m, patch), 20);  // the ear on the 50.7° corner: 25.4°
+}
+
+// One apex for two border edges of unequal length at a reflex corner: vertex 12 and its faces as
+// the fill of the armadillo's 1,978-edge hole left them (coordinates relative to vertex 12, the
+// ring around it held fixed). Its faces on border edges 2–3 (0.058) and 5–2 (0.217) meet at
+// corner 2, where the mesh's own faces span less than 180°: no place of vertex 12 gives both
+// faces good angles (a search over its plane finds the best), and the finishing pass splits an
+// edge of the thinner face so that each border edge has its own apex.
+TEST(PatchAngles, TwoUnequalBorderEdgesAtAReflexCornerGetAnApexEach) {
+  TriMesh m;
+  m.positions = {{-0.04993, -0.24732, 0.21400}, {-0.00192, -0.24500, 0.24556}, {-0.00408, -0.06866, 0.07521},
+                 {0.04393, -0.06633, 0.10678},  {0.09194, -0.06401, 0.13834},  {-0.16865, -0.18407, -0.00527},
+                 {-0.28736, -0.12082, -0.22455}, {0.07336, 0.09683, -0.05533}, {-0.10619, 0.00409, -0.13344},
+                 {0.21737, 0.10984, 0.03934},   {-0.00429, 0.16785, -0.23117}, {0.11583, 0.00430, 0.08626},
+                 {0, 0, 0}};
+  // Vertex 12's faces (the patch), then the faces across their outer edges (held as mesh faces).
+  m.faces = {{12, 3, 11}, {7, 8, 12}, {3, 12, 2}, {11, 7, 12}, {5, 12, 8}, {12, 5, 2},
+             {3, 4, 11},  {8, 7, 10}, {2, 1, 3},  {7, 11, 9},  {6, 5, 8},  {0, 2, 5}};
+  std::vector<std::uint8_t> patch(m.faces.size(), 0);
+  std::fill(patch.begin(), patch.begin() + 6, 1);
+  Vec3 normal = Vec3::Zero();
+  for (int f = 0; f < 6; ++f) {
+    const Face& t = m.faces[f];
+    normal += (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]);
+  }
+  normal.normalize();
+  // The best place for vertex 12 with these faces: a grid of 0.0005 over its plane, faces kept
+  // facing the same side.
+  const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+  double alone = 0;
+  for (int i = -300; i <= 300; ++i)
+    for (int j = -300; j <= 300; ++j) {
+      TriMesh probe = m;
+      probe.positions[12] = 0.0005 * (i * e1 + j * e2);
+      bool turned = false;
+      for (int f = 0; f < 6; ++f) {
+        const Face& t = probe.faces[f];
+        turned |= (probe.positions[t[1]] - probe.positions[t[0]]).cross(probe.positions[t[2]] - probe.positions[t[0]]).dot(normal) <= 0;
+      }
+      if (!turned) alone = std::max(alone, smallestAngleDegrees(probe, patch));
+    }
+  const double start = smallestAngleDegrees(m, patch);
+  ASSERT_GE(alone, start);  // the search includes where it is
+  std::vector<double> sigma(m.positions.size(), 0.1);
+  improvePatchAngles(m, patch, sigma, 12, 25, 8, true);
+  const double finished = smallestAngleDegrees(m, patch);
+  std::printf("start %.2f, vertex 12 alone at best %.2f, finished %.2f with %d vertices\n", start, alone, finished,
+              m.vertexCount());
+  EXPECT_GT(m.vertexCount(), 13);  // a split kept
+  EXPECT_GT(finished, alone + 0.5);
+  EXPECT_EQ(patch.size(), m.faces.size());
+  EXPECT_EQ(sigma.size(), m.positions.size());
 }
 
 }  // namespace
