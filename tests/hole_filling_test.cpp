@@ -500,5 +500,29 @@ TEST(PatchAngles, TwoUnequalBorderEdgesAtAReflexCornerGetAnApexEach) {
   EXPECT_EQ(sigma.size(), m.positions.size());
 }
 
+// An ear at a reflex corner: the triangulation's face on border edges c–a and c–b (corner c,
+// where the mesh's faces span 90°) lies over those mesh faces, reversed, whatever its angles (the
+// bunny refined twice, a 792-edge hole). The angle pass splits it and places the new vertex on
+// the hole's side, so that no patch face is turned over. Flat (z = 0): the mesh faces face +z.
+TEST(PatchAngles, AnEarTurnedBackOverTheMeshIsSplitAndUnfolded) {
+  TriMesh m;
+  // c, a, b, p: the mesh around the corner; d: a patch vertex on the hole's side.
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.7, 0.7, 0}, {-0.6, -0.6, 0}};
+  m.faces = {{0, 1, 3}, {0, 3, 2},  // the mesh
+             {1, 0, 2}, {1, 2, 4}};  // the ear (a, c, b), reversed, and a patch face on its inner edge
+  std::vector<std::uint8_t> patch = {0, 0, 1, 1};
+  std::vector<double> sigma(m.positions.size(), 0.5);
+  auto normalZ = [&](int f) {
+    const Face& t = m.faces[f];
+    return (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).z();
+  };
+  ASSERT_LT(normalZ(2), 0);  // the ear as the triangulation left it
+  improvePatchAngles(m, patch, sigma, 4);
+  EXPECT_EQ(m.vertexCount(), 6);  // the ear's inner edge split
+  for (int f = 0; f < m.faceCount(); ++f) EXPECT_GT(normalZ(f), 0) << "face " << f << " turned over";
+  EXPECT_EQ(patch.size(), m.faces.size());
+  EXPECT_EQ(sigma.size(), m.positions.size());
+}
+
 }  // namespace
 }  // namespace elastica

@@ -54,7 +54,9 @@ class PatchAngles {
   // between them), too thin because the two border edges differ in length. No flip or move can
   // widen it (its corners never move): its inner edge is split at the midpoint, and the new vertex
   // then becomes the apex of both border edges (movePass). On a 198-edge hole cut in CGAL's
-  // armadillo every face below 25° was such an ear.
+  // armadillo every face below 25° was such an ear. So is an ear at a reflex corner, turned back
+  // over the mesh whatever its angles (the bunny refined twice, a 792-edge hole: two border edges
+  // of the ear lay flat on the mesh's faces, reversed); its new vertex is placed back across them.
   int splitEars() {
     int splits = 0;
     const int faceCount = static_cast<int>(m_.faces.size());
@@ -63,7 +65,7 @@ class PatchAngles {
       const Face t = m_.faces[f];
       if (t[0] >= firstNew_ || t[1] >= firstNew_ || t[2] >= firstNew_) continue;
       const Vec3 &p0 = m_.positions[t[0]], &p1 = m_.positions[t[1]], &p2 = m_.positions[t[2]];
-      if (smallestAngle(p0, p1, p2) >= kEarDegrees) continue;
+      if (smallestAngle(p0, p1, p2) >= kEarDegrees && !turnedOverMesh(f)) continue;
       for (int k = 0; k < 3; ++k) {
         const int a = t[k], b = t[(k + 1) % 3];
         const int g = across(f, a, b);
@@ -222,6 +224,10 @@ class PatchAngles {
       if (!(side.norm() > 0)) continue;
       candidates.push_back(mid + std::sqrt(3.0) / 2 * ab.norm() * side.normalized());
       candidates.push_back(0.5 * (candidates.back() + here));  // halfway, in case the full move folds
+      // And across the edge: where v lies on the mesh's side of it (a split ear's midpoint at a
+      // reflex corner), the way back is there.
+      candidates.push_back(mid - std::sqrt(3.0) / 2 * ab.norm() * side.normalized());
+      candidates.push_back(here - 2 * side);  // v mirrored in the edge
     }
     double best = worstAngle(v, here, normal);
     if (best >= goodEnough_) return false;
@@ -282,7 +288,12 @@ class PatchAngles {
     for (int f : faces_[v]) {
       std::array<Vec3, 3> q;
       for (int k = 0; k < 3; ++k) q[k] = m_.faces[f][k] == v ? p : m_.positions[m_.faces[f][k]];
-      if (faceNormal(q[0], q[1], q[2]).dot(normal) <= 0) return -1;
+      const Vec3 n = faceNormal(q[0], q[1], q[2]);
+      if (n.dot(normal) <= 0) return -1;
+      // The edge opposite v, if on the border: the face must not lie back over the mesh's face.
+      int k = 0;
+      while (m_.faces[f][k] != v) ++k;
+      if (turnedOverMesh(n, f, m_.faces[f][(k + 1) % 3], m_.faces[f][(k + 2) % 3])) return -1;
       largestCos = std::max({largestCos, cosCorner(q[0], q[1], q[2]), cosCorner(q[1], q[2], q[0]), cosCorner(q[2], q[0], q[1])});
     }
     return degreesOfCos(largestCos);
@@ -298,6 +309,15 @@ class PatchAngles {
     const Face& t = m_.faces[h];
     const Vec3 nh = faceNormal(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]);
     return n.dot(nh) < kTurnedCos * n.norm() * nh.norm();
+  }
+
+  // Whether patch face f lies turned back over the mesh across one of its border edges.
+  bool turnedOverMesh(int f) const {
+    const Face& t = m_.faces[f];
+    const Vec3 n = faceNormal(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]);
+    for (int k = 0; k < 3; ++k)
+      if (turnedOverMesh(n, f, t[k], t[(k + 1) % 3])) return true;
+    return false;
   }
 
   // Flips edge (a, b) between f = (a, b, c) and g = (b, a, d) into (a, d, c), (b, c, d) if that
