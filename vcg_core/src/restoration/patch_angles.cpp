@@ -95,15 +95,13 @@ class PatchAngles {
         const int a = t[k], b = t[(k + 1) % 3], v = t[(k + 2) % 3];
         if (v < firstNew_ || !onBorder(f, a, b)) continue;
         // v's two edges in f, directed as in f: (b, v) and (v, a).
-        bool split = false;
         for (auto [p, q] : {std::pair{b, v}, std::pair{v, a}}) {
           const int g = across(f, p, q);
           if (g >= 0 && patch_[g] && trySplit(f, g, p, q, v)) {
-            split = true;
+            ++splits;
             break;
           }
         }
-        if (split) ++splits;
         break;  // with an apex inside the patch, f has one border edge at most
       }
     }
@@ -145,13 +143,12 @@ class PatchAngles {
 
   // The smallest angle (degrees) of v's faces where they are.
   double worstHere(int v) const {
-    double largestCos = -1;
+    double worst = 180;
     for (int f : faces_[v]) {
       const Face& t = m_.faces[f];
-      const Vec3 &p0 = m_.positions[t[0]], &p1 = m_.positions[t[1]], &p2 = m_.positions[t[2]];
-      largestCos = std::max({largestCos, cosCorner(p0, p1, p2), cosCorner(p1, p2, p0), cosCorner(p2, p0, p1)});
+      worst = std::min(worst, smallestAngle(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]));
     }
-    return degreesOfCos(largestCos);
+    return worst;
   }
 
   // Splits edge (p, q) (directed as in face f; g is across it; v one of its ends, inside the
@@ -159,31 +156,16 @@ class PatchAngles {
   // rose; otherwise puts everything back.
   bool trySplit(int f, int g, int p, int q, int v) {
     const double before = worstHere(v);
-    const Face oldF = m_.faces[f], oldG = m_.faces[g];
     const Vec3 oldV = m_.positions[v];
-    const int c = third(f, p, q), d = third(g, q, p);
+    const Face oldF = m_.faces[f], oldG = m_.faces[g];
     split(f, g, p, q);
     const int m = static_cast<int>(m_.positions.size()) - 1;
-    const int f2 = static_cast<int>(m_.faces.size()) - 2, g2 = f2 + 1;
     for (int round = 0; round < 2; ++round) {
       place(m);
       place(v);
     }
     if (std::min(worstHere(m), worstHere(v)) > before + kGain) return true;
-    // Undo: split() rewrote f and g, appended f2 = (m, q, c) and g2 = (m, p, d) and vertex m.
-    m_.faces[f] = oldF;
-    m_.faces[g] = oldG;
-    m_.faces.resize(f2);
-    patch_.resize(f2);
-    drop(q, f2);
-    drop(c, f2);
-    drop(p, g2);
-    drop(d, g2);
-    faces_[q].push_back(f);
-    faces_[p].push_back(g);
-    faces_.pop_back();
-    m_.positions.pop_back();
-    sigma_.pop_back();
+    unsplit(f, g, oldF, oldG);
     m_.positions[v] = oldV;
     return false;
   }
@@ -375,6 +357,25 @@ class PatchAngles {
     faces_[a].push_back(g2);
     faces_[d].push_back(g2);
     faces_[m] = {f, g, f2, g2};
+  }
+
+  // Undoes the last split(f, g, a, b): f and g were `oldF` = (a, b, c) and `oldG` = (b, a, d).
+  void unsplit(int f, int g, const Face& oldF, const Face& oldG) {
+    const int f2 = static_cast<int>(m_.faces.size()) - 2, g2 = f2 + 1;  // (m, b, c) and (m, a, d)
+    const int b = m_.faces[f2][1], c = m_.faces[f2][2], a = m_.faces[g2][1], d = m_.faces[g2][2];
+    m_.faces[f] = oldF;
+    m_.faces[g] = oldG;
+    m_.faces.resize(f2);
+    patch_.resize(f2);
+    drop(b, f2);
+    drop(c, f2);
+    drop(a, g2);
+    drop(d, g2);
+    faces_[b].push_back(f);
+    faces_[a].push_back(g);
+    faces_.pop_back();
+    m_.positions.pop_back();
+    sigma_.pop_back();
   }
 
   // Face `face` no longer has corner v.
