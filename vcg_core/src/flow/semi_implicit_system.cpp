@@ -54,26 +54,35 @@ void SemiImplicitSystem::buildPattern(const Topology& topo, const std::vector<st
 
 void SemiImplicitSystem::assemble(const Topology& topo, const Geometry& geo, const std::vector<std::uint8_t>& active,
                                   const std::vector<int>& freeIndex, int n, const std::vector<double>& speed, double tau) {
+  assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, freeIndex, n, 1.0, 0.5 * tau);
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    const int r = freeIndex[v];
+    if (r >= 0) rhs_[r] = tau * geo.vertexArea[v] * speed[v];
+  }
+}
+
+void SemiImplicitSystem::assembleMatrix(const Topology& topo, const std::vector<double>& edgeWeight,
+                                        const std::vector<double>& vertexArea, const std::vector<std::uint8_t>& active,
+                                        const std::vector<int>& freeIndex, int n, double mass, double scale) {
   if (!patterned_ || K_.rows() != n) buildPattern(topo, active, freeIndex, n);
   double* value = K_.valuePtr();
   std::fill(value, value + K_.nonZeros(), 0.0);
   std::size_t next = 0;  // the pattern's products, in the same order
   for (int i = 0; i < topo.vertexCount(); ++i) {
     if (!active[i]) continue;
-    freeColumn(topo, freeIndex, i, [&](int k) { return geo.edgeWeight[topo.ringEdge(k)]; }, column_);
+    freeColumn(topo, freeIndex, i, [&](int k) { return edgeWeight[topo.ringEdge(k)]; }, column_);
     const std::size_t m = column_.size();
-    if (geo.isRegular(i)) {  // a vertex without area contributes nothing (its slots stay zero)
-      const double s = 0.5 * tau / geo.vertexArea[i];
+    if (vertexArea[i] > 0) {  // a vertex without area contributes nothing (its slots stay zero)
+      const double s = scale / vertexArea[i];
       for (std::size_t a = 0; a < m; ++a)
         for (std::size_t b = 0; b < m; ++b) value[slot_[next + a * m + b]] += s * column_[a].second * column_[b].second;
     }
     next += m * m;
   }
+  if (mass == 0) return;
   for (int v = 0; v < topo.vertexCount(); ++v) {
     const int r = freeIndex[v];
-    if (r < 0) continue;
-    value[diagonalSlot_[r]] += geo.vertexArea[v];
-    rhs_[r] = tau * geo.vertexArea[v] * speed[v];
+    if (r >= 0) value[diagonalSlot_[r]] += mass * vertexArea[v];
   }
 }
 

@@ -24,6 +24,13 @@ class SemiImplicitSystem {
   /// first call and reused (no allocation, no sorting) until reset().
   void assemble(const Topology& topo, const Geometry& geo, const std::vector<std::uint8_t>& active,
                 const std::vector<int>& freeIndex, int n, const std::vector<double>& speed, double tau);
+  /// The matrix alone, in general form: mass · M_ff + scale · C_fa M_aa⁻¹ C_af, with C_ij from
+  /// `edgeWeight` (per edge of `topo`) and M from `vertexArea` (a vertex without area adds no
+  /// product). assemble() is (1, τ/2) with the geometry's weights; the bi-Laplace start
+  /// (restoration/biharmonic_embedding.cpp) is (0, 1). Leaves the right-hand side as it was.
+  void assembleMatrix(const Topology& topo, const std::vector<double>& edgeWeight, const std::vector<double>& vertexArea,
+                      const std::vector<std::uint8_t>& active, const std::vector<int>& freeIndex, int n, double mass,
+                      double scale);
   /// Forgets the pattern: call when the connectivity or the free vertices change.
   void reset() { patterned_ = false; }
 

@@ -83,7 +83,8 @@ bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
     return factored_ = impl_->supernodal->info() == Eigen::Success;
   }
   impl_->simplicial->factorize(A);
-  return factored_ = impl_->simplicial->info() == Eigen::Success;
+  // LDLᵀ also factors an indefinite matrix: a pivot that is not positive says A is not SPD.
+  return factored_ = impl_->simplicial->info() == Eigen::Success && (impl_->simplicial->vectorD().array() > 0).all();
 }
 
 void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
