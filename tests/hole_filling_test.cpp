@@ -83,6 +83,42 @@ TEST(HoleFilling, DeepCapsRestoreWithoutSlivers) {
   }
 }
 
+// Coarse to fine (HoleFillOptions::coarseFirstFromEdges, on by default from 1,000 border edges,
+// here for every hole): the patch started and flowed at twice the border's edge lengths, then
+// remeshed to the border's density and flowed again, ends on the sphere as the direct fill does,
+// at the same energy of the same region (measured: 70° 8.782 against 8.777, 120° 19.270 against
+// 19.155; radius error 9e-5 and 7e-3), its fine flow judged against its own start.
+TEST(HoleFilling, DeepCapsRestoreCoarseToFine) {
+  for (double degrees : {70.0, 120.0}) {
+    TriMesh direct = sphereWithCapHole(degrees);
+    TriMesh mesh = direct;
+    const int before = mesh.vertexCount(), beforeFaces = mesh.faceCount();
+    const HoleFillReport d = fillHoles(direct, {});
+    HoleFillOptions opt;
+    opt.coarseFirstFromEdges = 3;
+    const HoleFillReport r = fillHoles(mesh, opt);
+    ASSERT_EQ(r.holes.size(), 1u);
+    const HoleReport& h = r.holes[0];
+    EXPECT_TRUE(h.reason.empty()) << degrees << ": " << h.reason;
+    std::vector<std::string> stages;
+    for (const FillStageReport& s : h.stages) stages.push_back(s.stage);
+    EXPECT_NE(std::find(stages.begin(), stages.end(), "coarse flow"), stages.end()) << degrees;
+    EXPECT_NE(std::find(stages.begin(), stages.end(), "remeshing to the border's density"), stages.end()) << degrees;
+    double worst = 0;
+    for (int i = before; i < mesh.vertexCount(); ++i) worst = std::max(worst, std::abs(mesh.positions[i].norm() - 1));
+    EXPECT_LT(worst, 0.01) << degrees;  // within 1 % of the radius, as the direct fill
+    EXPECT_NEAR(h.energyAfter, d.holes[0].energyAfter, 0.01 * d.holes[0].energyAfter) << degrees;
+    EXPECT_GE(smallestAngleDegrees(mesh, beforeFaces), 20) << degrees;
+    EXPECT_EQ(selfIntersections(mesh), 0) << degrees;
+    const Topology topo(mesh.vertexCount(), mesh.faces);
+    EXPECT_EQ(topo.boundaryEdgeCount(), 0) << degrees;
+    EXPECT_EQ(topo.eulerCharacteristic(), 2) << degrees;
+    std::printf("%.0f deg cap: coarse to fine %d new vertices, E %.4f, worst radius error %.2e, smallest angle %.1f; "
+                "direct %d new vertices, E %.4f\n",
+                degrees, h.newVertices, h.energyAfter, worst, h.minAngleDegrees, d.holes[0].newVertices, d.holes[0].energyAfter);
+  }
+}
+
 // A hole in the side of a cylinder (radius 1). Cylinders are not Willmore surfaces (F = 1/(4r³)
 // outward), so the elastica patch bulges out a little; the bi-Laplace patch (CGAL's fairing) sags
 // inward. Returns the largest outward and inward radial deviations of the new vertices.

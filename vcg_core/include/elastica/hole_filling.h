@@ -41,6 +41,12 @@ struct HoleFillOptions {
   int maxHoleEdges = 500;
   FillStage stopAfter = FillStage::Flow;
   PatchRefinementOptions refinement;
+  /// Holes with at least this many border edges are faired coarse to fine (0: never): the patch
+  /// is refined to half the border's density, started and flowed there, then refined to the
+  /// border's density and flowed again from that shape. A large patch's flow spends its steps
+  /// moving the whole surface far (the bi-Laplace start of a deep hole is far from the elastica
+  /// one), which a quarter of the vertices does as well at a quarter of the cost per step.
+  int coarseFirstFromEdges = 1000;
   /// The flow that fairs each patch (the boundary mode is ignored: the surrounding mesh is fixed).
   /// Subdivision is not allowed: it would split the original faces. Defaults to the semi-implicit
   /// elastica flow, which converges in tens of steps where the explicit scheme needs hundreds of
@@ -74,7 +80,9 @@ struct HoleFillOptions {
 /// One stage of a hole's pipeline after its triangulation, measured on the same region as every
 /// other (the patch's faces and their vertices, the border's included, each with its whole fan).
 struct FillStageReport {
-  std::string stage;   ///< "triangulation", "refinement", "bi-Laplace", "flow", "remeshing and flow"
+  /// "triangulation", "refinement", "bi-Laplace", "remeshing", "flow", "remeshing and flow"; coarse to
+  /// fine (HoleFillOptions::coarseFirstFromEdges) also "coarse flow", "remeshing to the border's density"
+  std::string stage;
   bool kept = false;   ///< false: the patch went back to what the last kept stage left
   double minAngleDegrees = 0;  ///< what the stage left, kept or not
   double energy = 0;           ///< total curvature energy of the region, kept or not

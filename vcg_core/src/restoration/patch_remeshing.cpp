@@ -27,8 +27,8 @@ bool turnsLittle(const Vec3& before, const Vec3& after) {
 class PatchEditor {
  public:
   PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
-              std::vector<std::uint8_t>& movable)
-      : m_(mesh), patch_(patchFace), sigma_(sigma), movable_(movable), faceAlive_(mesh.faces.size(), 1),
+              std::vector<std::uint8_t>& movable, double lengthScale)
+      : m_(mesh), patch_(patchFace), sigma_(sigma), movable_(movable), scale_(lengthScale), faceAlive_(mesh.faces.size(), 1),
         vertexFaces_(vertexFaces(mesh)) {
     sigma_.resize(m_.positions.size(), 0);
     movable_.resize(m_.positions.size(), 0);
@@ -54,7 +54,10 @@ class PatchEditor {
   }
 
   double length(int a, int b) const { return (m_.positions[a] - m_.positions[b]).norm(); }
-  double target(int a, int b) const { return 0.5 * (sigma_[a] + sigma_[b]); }
+  // The edge length wanted between a and b (their sigmas' mean times the options' lengthScale),
+  // and the sigma a vertex made between them carries (without the scale).
+  double target(int a, int b) const { return scale_ * sigmaBetween(a, b); }
+  double sigmaBetween(int a, int b) const { return 0.5 * (sigma_[a] + sigma_[b]); }
 
   // The faces on edge (a, b): f0 = (a, b, c) and f1 = (b, a, d) in cyclic order. False unless the
   // edge exists with two faces, both in the patch (the patch's border is never edited).
@@ -76,7 +79,7 @@ class PatchEditor {
     if (!interiorEdge(a, b, f0, f1, c, d)) return false;
     const int x = m_.vertexCount();
     m_.positions.push_back(0.5 * (m_.positions[a] + m_.positions[b]));
-    sigma_.push_back(target(a, b));
+    sigma_.push_back(sigmaBetween(a, b));
     movable_.push_back(1);
     vertexFaces_.emplace_back();
     addFace({x, b, c});
@@ -96,12 +99,12 @@ class PatchEditor {
     std::vector<int> na = neighbours(a), nb = neighbours(b), common;
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
     if (common.size() != 2 || vertexFaces_[c].size() <= 3 || vertexFaces_[d].size() <= 3) return false;
-    const double s = target(a, b);
+    const double s = sigmaBetween(a, b);
     for (int v : {a, b}) {
       for (int f : vertexFaces_[v]) {
         if (f == f0 || f == f1) continue;
         for (int u : m_.faces[f])
-          if (u != v && (p - m_.positions[u]).norm() > kSplitFactor * 0.5 * (s + sigma_[u])) return false;
+          if (u != v && (p - m_.positions[u]).norm() > kSplitFactor * scale_ * 0.5 * (s + sigma_[u])) return false;
         if (!turnsLittle(normalOf(f, v, m_.positions[v]), normalOf(f, v, p))) return false;
       }
     }
@@ -288,6 +291,7 @@ class PatchEditor {
   std::vector<std::uint8_t>& patch_;
   std::vector<double>& sigma_;
   std::vector<std::uint8_t>& movable_;
+  double scale_;
   std::vector<std::uint8_t> faceAlive_;
   std::vector<std::vector<int>> vertexFaces_;
   // compact() refills dead slots from the end of the face list: while the patch keeps at least as
@@ -306,7 +310,7 @@ void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vecto
 
 void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt) {
-  PatchEditor patch(mesh, regionFace, sigma, movable);
+  PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale);
   for (int round = 0; round < opt.iterations; ++round) {
     for (int pass = 0; pass < kMaxSplitPasses; ++pass) {
       bool any = false;

@@ -22,6 +22,9 @@ struct PatchRemeshingOptions {
   /// Splits stop once the mesh has this many vertices (0: no limit): a region whose edges span
   /// many orders of magnitude (a vertex thrown far away) would otherwise be split without end.
   int maxVertices = 0;
+  /// Target edge lengths are this times `sigma` (a coarse pass over a patch whose sigma holds the
+  /// border's density: restoration's coarse-to-fine fill). Sigmas of new vertices stay unscaled.
+  double lengthScale = 1;
 };
 
 /// Remeshes the faces flagged in `patchFace` (one byte per face) toward the edge length `sigma`
