@@ -31,9 +31,6 @@ constexpr double kInitialTau = 0.05, kGrow = 1.5, kShrink = 0.5, kSmallestTau = 
 // After a failed step, τ stays below kCeilingMargin × the failed size, which rises by kCeilingGrow
 // per accepted step.
 constexpr double kCeilingMargin = 0.8, kCeilingGrow = 1.2;
-// Sliver repairs (FlowState::repairSlivers) tried between two accepted steps before a rejection
-// shrinks τ after all.
-constexpr int kMaxSliverRepairs = 3;
 // A stage after the first starts at this fraction of the previous stage's last accepted step.
 constexpr double kStageTauCarry = 0.25;
 // Semi-implicit plateau: relative energy change over this many accepted steps. Subdivision is
@@ -204,7 +201,6 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
   if (run.opt.startAtShapeScale) tau = std::max(tau, area0 * area0 / (10 * kShapeScaleFactor));
   double ceiling = std::numeric_limits<double>::infinity();  // the last step size that failed, raised slowly
-  int sliverRepairs = 0;  // since the last accepted step
   // The window holds, per accepted step, the flow time and the energy the normal steps have taken
   // off so far (drift passes and edge flips excluded: they redistribute vertices, and a stop
   // rule that counted them would wait on mesh changes rather than on the shape).
@@ -214,15 +210,6 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
     ++report.steps;  // attempts count against maxSteps
     if (!integrator.tryStep(state, tau)) {
       ++report.rejectedSteps;
-      // Slivers that turned over are widened and the step is tried again at the same τ: halving τ
-      // would not save them, and the ceiling it leaves takes many steps to grow back (the
-      // elephant's 1,978-edge hole: τ went from 2·10⁻⁶ to 2·10⁻⁹ for one 0.01° face, and the
-      // next 60 steps grew it back).
-      if (!integrator.lastTurnedSlivers().empty() && sliverRepairs < kMaxSliverRepairs &&
-          state.repairSlivers(integrator.lastTurnedSlivers())) {
-        ++sliverRepairs;
-        continue;
-      }
       ceiling = tau;
       tau *= kShrink;
       if (tau < kSmallestTau * ell4) {  // nothing lowers E any more
@@ -231,7 +218,6 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
       }
       continue;
     }
-    sliverRepairs = 0;
     // A large step moves smooth modes freely, including the scale, which E does not see.
     state.maintain(area0);
     ++stage.steps;

@@ -52,44 +52,6 @@ void FlowState::maintain(double area) {
   }
 }
 
-bool FlowState::repairSlivers(const std::vector<int>& faces) {
-  evaluateGeometry();
-  auto turnsIfAt = [&](int v, const Vec3& p) {
-    for (int k = topo_.cornerBegin(v); k < topo_.cornerEnd(v); ++k) {
-      const int f = topo_.corner(k) / 3;
-      const Face& t = mesh_.faces[f];
-      Vec3 q[3];
-      for (int i = 0; i < 3; ++i) q[i] = t[i] == v ? p : mesh_.positions[t[i]];
-      if ((q[1] - q[0]).cross(q[2] - q[0]).dot(geo_.faceNormal[f]) <= 0) return true;
-    }
-    return false;
-  };
-  bool changed = false;
-  for (int f : faces) {
-    for (int v : mesh_.faces[f]) {
-      if (!roles_.free[v] || topo_.valence(v) == 0) continue;
-      Vec3 mean = Vec3::Zero();
-      for (int k = topo_.ringBegin(v); k < topo_.ringEnd(v); ++k) mean += mesh_.positions[topo_.ringVertex(k)];
-      Vec3 move = mean / topo_.valence(v) - mesh_.positions[v];
-      const Vec3& n = geo_.vertexNormal[v];
-      move -= move.dot(n) * n;
-      for (int halving = 0; halving < 4; ++halving, move *= 0.5) {
-        if (turnsIfAt(v, mesh_.positions[v] + move)) continue;
-        mesh_.positions[v] += move;
-        changed = true;
-        break;
-      }
-    }
-  }
-  invalidate();
-  if (flipToDelaunay(mesh_, roles_.free) > 0) {
-    topo_ = Topology(mesh_.vertexCount(), mesh_.faces);
-    buildConnectivity();
-    changed = true;
-  }
-  return changed;
-}
-
 // Whether flipToDelaunay could flip anything: an edge between free vertices is non-Delaunay
 // exactly when its cotangent weight ½(cot α + cot β) is negative (α + β > π). Saves rebuilding the
 // adjacency for the flip search after almost every step, when nothing is to flip.

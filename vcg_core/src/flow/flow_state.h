@@ -64,11 +64,6 @@ class FlowState {
   void maintain(double area);
   /// Moves the sliding boundary vertices a step along the boundary (BoundaryMode::Slide).
   void slideBoundary();
-  /// Widens the given faces (slivers that a step turned over): each free corner moves toward the
-  /// mean of its neighbours within its tangent plane (halved until none of its faces turns), then
-  /// edges between free vertices are flipped toward Delaunay. The shape changes by the square of
-  /// the moves times the curvature. Returns whether anything moved or flipped.
-  bool repairSlivers(const std::vector<int>& faces);
 
  private:
   void buildConnectivity();

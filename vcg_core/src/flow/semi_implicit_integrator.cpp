@@ -3,7 +3,6 @@
 #include "flow/semi_implicit_integrator.h"
 #include "flow/semi_implicit_system.h"
 #include "flow/spd_solver.h"
-#include <elastica/mesh_quality.h>
 #include "mesh/self_intersection.h"
 #include "support/parallel.h"
 
@@ -97,7 +96,6 @@ void SemiImplicitIntegrator::speed(FlowState& state) {
 }
 
 bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
-  turnedSlivers_.clear();
   std::vector<Vec3>& positions = state.positions();
   auto reject = [&] {
     positions = saved_;
@@ -146,10 +144,7 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
     largest = std::max(largest, scale * std::abs(delta[r]));
   }
   state.invalidate();
-  if (!acceptable(state, energyLimit)) {
-    noteTurnedSlivers(state, energyLimit);
-    return reject();
-  }
+  if (!acceptable(state, energyLimit)) return reject();
   lastNormalStep_ = largest;
   // After a move of an edge length or more the geometry (cotangents, areas) has changed too much
   // for the old factorisation to precondition the next step well (15–16 iterations, as costly as
@@ -188,23 +183,6 @@ bool SemiImplicitIntegrator::acceptable(FlowState& state, double energyLimit) {
   if (!std::isfinite(e)) return false;
   // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
   return state.options().flow != FlowType::Elastica || e <= energyLimit;
-}
-
-void SemiImplicitIntegrator::noteTurnedSlivers(FlowState& state, double energyLimit) {
-  const double e = state.energy();
-  if (!std::isfinite(e) || (state.options().flow == FlowType::Elastica && e > energyLimit)) return;
-  const Geometry& geo = state.geometryOnly();
-  const std::vector<std::uint8_t>& activeFace = state.roles().activeFace;
-  const std::vector<Face>& faces = state.mesh().faces;
-  for (int f = 0; f < state.topology().faceCount(); ++f) {
-    if (!activeFace[f] || geo.faceNormal[f].dot(faceNormalBefore_[f]) >= 0) continue;
-    const Face& t = faces[f];
-    if (!(smallestAngleDegrees(saved_[t[0]], saved_[t[1]], saved_[t[2]]) < kSliverDegrees)) {
-      turnedSlivers_.clear();  // a face of some size turned: the step was too large
-      return;
-    }
-    turnedSlivers_.push_back(f);
-  }
 }
 
 bool SemiImplicitIntegrator::driftPass(FlowState& state, double energyLimit) {

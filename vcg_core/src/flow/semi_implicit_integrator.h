@@ -33,13 +33,6 @@ class SemiImplicitIntegrator {
   void guardEmbedding(bool on) { guardEmbedding_ = on; }
   /// Attempts rejected by the embedding guard alone.
   long long crossingRejections() const { return crossingRejections_; }
-  /// If the last attempt failed only because faces turned over, and each of them was a sliver
-  /// before it (smallest angle below kSliverDegrees): those faces. Empty otherwise. A sliver's
-  /// normal turns under moves far below its corners' own (on the elephant's 1,978-edge hole a
-  /// 0.01° face turned at every τ down to 1/4,000 of the one before), so a smaller τ is not the
-  /// remedy; FlowState::repairSlivers is.
-  const std::vector<int>& lastTurnedSlivers() const { return turnedSlivers_; }
-  static constexpr double kSliverDegrees = 5;
 
  private:
   void speed(FlowState& state);
@@ -49,9 +42,6 @@ class SemiImplicitIntegrator {
   /// Evaluates the moved positions: no active face turned over since faceNormalBefore_, finite
   /// energy, at most `energyLimit` (elastica).
   bool acceptable(FlowState& state, double energyLimit);
-  /// After acceptable() said no to a step's positions: the turned faces into turnedSlivers_ if
-  /// the energy was within `energyLimit` and every one of them was a sliver before the step.
-  void noteTurnedSlivers(FlowState& state, double energyLimit);
   /// One tangential drift pass; undone (returns false) if the result is not acceptable().
   bool driftPass(FlowState& state, double energyLimit);
 
@@ -63,7 +53,6 @@ class SemiImplicitIntegrator {
   std::vector<int> freeIndex_;    // vertex → row of the system, or -1
   std::vector<double> lh_, speed_;
   std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_, drift_;
-  std::vector<int> turnedSlivers_;
   DriftScratch driftScratch_;
   struct SparseSolver;  // the system and Eigen's/CHOLMOD's factorisation, pattern analysed once per topology
   std::shared_ptr<SparseSolver> solver_;

@@ -286,6 +286,10 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
     remeshPatch(sub, patchFace, sigma, firstNew, rounds);
     patch.judge("remeshing", 0);
   }
+  // A step or time limit (or the caller's cancel) ended the last flow: no further stage.
+  auto limitReached = [&] {
+    return hole.stop == StopReason::MaxSteps || hole.stop == StopReason::MaxSeconds || hole.stop == StopReason::Cancelled;
+  };
   std::optional<double> fineStart;
   if (coarseFirst) {
     // The coarse patch's flow, judged like any stage; the fine one goes on from what it left,
@@ -295,9 +299,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
     // as they are (the armadillo's 1,978-edge hole kept a 17.4° face on a border edge, and a
     // second remeshing and flow took 42 s), remeshing makes them anew.
     flowStage("coarse flow", [&] { relaxTangentially(sub, freeVertices()); });
-    const bool limitedSoFar = hole.stop == StopReason::MaxSteps || hole.stop == StopReason::MaxSeconds ||
-                              hole.stop == StopReason::Cancelled;
-    if (limitedSoFar) {
+    if (limitReached()) {
       patch.restore();
       hole.energyAfter = patch.kept().energy;
       return;
@@ -317,10 +319,8 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   // again from there (a short run: the shape is already there). Not where the only thin faces
   // are on border edges: remeshing keeps the border and leaves them as they are (a 794-edge hole
   // in the armadillo spent 5 s, half its fill, to go from 17.4° to 17.5°).
-  const bool limited = hole.stop == StopReason::MaxSteps || hole.stop == StopReason::MaxSeconds ||
-                       hole.stop == StopReason::Cancelled;
   const bool thinInside = !flowKept || smallestAngleAwayFromBorder(sub, patchFace, firstNew) < kRemeshBelowDegrees;
-  if (!limited && thinInside && patch.kept().minAngleDegrees < kRemeshBelowDegrees)
+  if (!limitReached() && thinInside && patch.kept().minAngleDegrees < kRemeshBelowDegrees)
     flowStage("remeshing and flow", [&] { remeshPatch(sub, patchFace, sigma, firstNew); });
   patch.restore();
   hole.energyAfter = patch.kept().energy;
