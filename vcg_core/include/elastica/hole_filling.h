@@ -42,8 +42,8 @@ struct HoleFillOptions {
   FillStage stopAfter = FillStage::Flow;
   PatchRefinementOptions refinement;
   /// Holes with at least this many border edges are faired coarse to fine (0: never): the patch
-  /// is refined to half the border's density, started and flowed there, then refined to the
-  /// border's density and flowed again from that shape. A large patch's flow spends its steps
+  /// is refined to half the border's density, started and flowed there, then remeshed to the
+  /// border's density and flowed again from that shape (that flow judged against its own start). A large patch's flow spends its steps
   /// moving the whole surface far (the bi-Laplace start of a deep hole is far from the elastica
   /// one), which a quarter of the vertices does as well at a quarter of the cost per step.
   int coarseFirstFromEdges = 1000;

@@ -54,6 +54,16 @@ constexpr double kEnergySlack = 1e-4;
 // border's edge lengths: a quarter of the vertices.
 constexpr double kCoarseScale = 2;
 
+// The remeshing of a patch about to be flowed, toward `lengthScale` times the border's edge
+// lengths: half the rounds of a full one, since patch_angles and the flow's flips finish the job
+// (a 6,000-vertex patch spent 0.9 s, more than its flow, in ten rounds).
+PatchRemeshingOptions remeshingBeforeAFlow(double lengthScale) {
+  PatchRemeshingOptions rounds;
+  rounds.iterations = rounds.relaxPasses = 5;
+  rounds.lengthScale = lengthScale;
+  return rounds;
+}
+
 // The smallest angle of the patch faces away from the border: those without a border edge (two
 // corners before `firstNew`). The faces on border edges are the border ring's, which remeshing
 // leaves to patch_angles.
@@ -278,14 +288,10 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   // slivers. Judged like any stage; the flow goes on from it either way (from the slivers, the
   // flow folded the patch of a 110° cap through itself).
   if (patch.kept().minAngleDegrees < kRemeshStartBelowDegrees) {
-    // Half the rounds of a full remeshing: patch_angles and the flow's flips finish the job (a
-    // 6,000-vertex patch spent 0.9 s, more than its flow, in ten rounds).
-    PatchRemeshingOptions rounds;
-    rounds.iterations = rounds.relaxPasses = 5;
-    rounds.lengthScale = lengthScale;
-    remeshPatch(sub, patchFace, sigma, firstNew, rounds);
+    remeshPatch(sub, patchFace, sigma, firstNew, remeshingBeforeAFlow(lengthScale));
     patch.judge("remeshing", 0);
   }
+  auto relax = [&] { relaxTangentially(sub, freeVertices()); };
   // A step or time limit (or the caller's cancel) ended the last flow: no further stage.
   auto limitReached = [&] {
     return hole.stop == StopReason::MaxSteps || hole.stop == StopReason::MaxSeconds || hole.stop == StopReason::Cancelled;
@@ -298,21 +304,19 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
     // Remeshed rather than refined at centroids: refinement leaves the coarse border ring's faces
     // as they are (the armadillo's 1,978-edge hole kept a 17.4° face on a border edge, and a
     // second remeshing and flow took 42 s), remeshing makes them anew.
-    flowStage("coarse flow", [&] { relaxTangentially(sub, freeVertices()); });
+    flowStage("coarse flow", relax);
     if (limitReached()) {
       patch.restore();
       hole.energyAfter = patch.kept().energy;
       return;
     }
-    PatchRemeshingOptions rounds;
-    rounds.iterations = rounds.relaxPasses = 5;
-    remeshPatch(sub, patchFace, sigma, firstNew, rounds);
+    remeshPatch(sub, patchFace, sigma, firstNew, remeshingBeforeAFlow(1.0));
     patch.note("remeshing to the border's density");
     fineStart = hole.stages.back().energy;
   }
   // After a coarse flow, the fine flow is judged against its own start (the energy of the remeshed
   // patch) and, failing, leaves the coarse patch.
-  const bool flowKept = flowStage("flow", [&] { relaxTangentially(sub, freeVertices()); }, fineStart);
+  const bool flowKept = flowStage("flow", relax, fineStart);
   if (coarseFirst) patch.settleWithNext(flowKept);
   // The flow inflates a deep patch (a 120° cap's bi-Laplace patch has 40 % of the restored cap's
   // area) and so stretches the triangles it started from: remesh at the final size, and flow
