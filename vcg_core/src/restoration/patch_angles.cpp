@@ -44,9 +44,19 @@ class PatchAngles {
       for (int v : m_.faces[f]) faces_[v].push_back(f);
   }
 
+  // Each pass looks again only at what changed around since it last looked (the outcome of a move
+  // or a flip depends on the positions of the vertices of its faces and of the faces across their
+  // edges, and on those faces; the mesh outside the patch never changes): the same result as
+  // looking at everything, at the cost of the changes. On the armadillo's 1,978-edge hole (170,000
+  // patch vertices) the 8 passes over everything took a sixth of the fill.
   int movePass() {
     int moves = 0;
-    for (int v = firstNew_; v < static_cast<int>(m_.positions.size()); ++v) moves += place(v);
+    for (int v = firstNew_; v < static_cast<int>(m_.positions.size()); ++v) {
+      grow();
+      if (stamp_[v] <= vLooked_[v]) continue;
+      vLooked_[v] = clock_;
+      moves += place(v);
+    }
     return moves;
   }
 
@@ -112,6 +122,10 @@ class PatchAngles {
     int flips = 0;
     for (int f = 0; f < static_cast<int>(m_.faces.size()); ++f) {
       if (!patch_[f]) continue;
+      grow();
+      const Face& t = m_.faces[f];
+      if (std::max({stamp_[t[0]], stamp_[t[1]], stamp_[t[2]]}) <= fLooked_[f]) continue;
+      fLooked_[f] = clock_;
       for (int k = 0; k < 3; ++k) {
         const int a = m_.faces[f][k], b = m_.faces[f][(k + 1) % 3];
         const int g = across(f, a, b);
@@ -167,6 +181,7 @@ class PatchAngles {
     if (std::min(worstHere(m), worstHere(v)) > before + kGain) return true;
     unsplit(f, g, oldF, oldG);
     m_.positions[v] = oldV;
+    touch(v);
     return false;
   }
 
@@ -188,8 +203,10 @@ class PatchAngles {
     }
     if (!(normal.norm() > 0)) return false;
     normal.normalize();
-    centroid /= neighbours;
     const Vec3 here = m_.positions[v];
+    double best = worstAngle(v, here, normal);
+    if (best >= goodEnough_) return false;
+    centroid /= neighbours;
     std::vector<Vec3> candidates{centroid};
     bool facesBorder = false;  // v is the apex of a border edge
     // The apex of the equilateral triangle on each border edge v faces, on v's side of it.
@@ -211,8 +228,6 @@ class PatchAngles {
       candidates.push_back(mid - std::sqrt(3.0) / 2 * ab.norm() * side.normalized());
       candidates.push_back(here - 2 * side);  // v mirrored in the edge
     }
-    double best = worstAngle(v, here, normal);
-    if (best >= goodEnough_) return false;
     // And small steps around it: where the ideal places fold a face or trade one thin face for
     // another, a step of a tenth or a quarter of the mean edge often helps.
     double reach = 0;
@@ -261,6 +276,7 @@ class PatchAngles {
     }
     if (bestPlace == here) return false;
     m_.positions[v] = bestPlace;
+    touch(v);
     return true;
   }
 
@@ -332,6 +348,7 @@ class PatchAngles {
     drop(b, f);
     faces_[c].push_back(g);
     faces_[d].push_back(f);
+    for (int x : {a, b, c, d}) touch(x);
     return true;
   }
 
@@ -357,6 +374,7 @@ class PatchAngles {
     faces_[a].push_back(g2);
     faces_[d].push_back(g2);
     faces_[m] = {f, g, f2, g2};
+    for (int x : {a, b, c, d, m}) touch(x);
   }
 
   // Undoes the last split(f, g, a, b): f and g were `oldF` = (a, b, c) and `oldG` = (b, a, d).
@@ -376,6 +394,25 @@ class PatchAngles {
     faces_.pop_back();
     m_.positions.pop_back();
     sigma_.pop_back();
+    for (int x : {a, b, c, d}) touch(x);
+  }
+
+  // What changed when: a move of v, or a change of one of v's faces, changes the outcome for v, for
+  // its neighbours and for the faces around them. Arrays only grow (a split that is undone leaves
+  // its slots; the next split's touch makes them current).
+  void grow() {
+    if (stamp_.size() < m_.positions.size()) {
+      stamp_.resize(m_.positions.size(), clock_);
+      vLooked_.resize(m_.positions.size(), 0);
+    }
+    if (fLooked_.size() < m_.faces.size()) fLooked_.resize(m_.faces.size(), 0);
+  }
+  void touch(int v) {
+    grow();
+    ++clock_;
+    stamp_[v] = clock_;
+    for (int f : faces_[v])
+      for (int x : m_.faces[f]) stamp_[x] = clock_;
   }
 
   // Face `face` no longer has corner v.
@@ -395,6 +432,8 @@ class PatchAngles {
   double goodEnough_;  // vertices whose faces all have angles above this stay where they are
   bool finishing_;     // the last pass on a flowed patch: border apexes are searched finely
   std::vector<std::vector<int>> faces_;
+  long long clock_ = 1;  // counts changes; everything starts as changed (stamp 1, looked at 0)
+  std::vector<long long> stamp_, vLooked_, fLooked_;
 };
 
 }  // namespace
