@@ -38,11 +38,8 @@ void SemiImplicitSystem::buildPattern(const Topology& topo, const std::vector<st
   inner.reserve(static_cast<std::size_t>(n) * 20);
   auto closedRing = [&](int i) {
     if (!active[i]) return;
-    for (int k = topo.ringBegin(i); k < topo.ringEnd(i); ++k) {
-      const int r = freeIndex[topo.ringVertex(k)];
-      if (r >= 0) rows.push_back(r);
-    }
-    if (freeIndex[i] >= 0) rows.push_back(freeIndex[i]);
+    freeColumn(topo, freeIndex, i, [](int) { return 0.0; }, column_);
+    for (const auto& entry : column_) rows.push_back(entry.first);
   };
   for (int c = 0; c < n; ++c) {
     const int u = vertexOfRow[c];
