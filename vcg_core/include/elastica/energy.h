@@ -14,4 +14,11 @@ namespace elastica {
 double totalCurvatureEnergy(const Topology& topo, const Geometry& geo, const Curvature& c,
                             const std::vector<std::uint8_t>* active = nullptr);
 
+/// Vertex i's term (4 H_i² − 2 K_i) A_i of totalCurvatureEnergy, 0 where the sum skips the vertex
+/// (a boundary or irregular vertex; the active mask is the caller's).
+inline double vertexCurvatureEnergy(const Topology& topo, const Geometry& geo, const Curvature& c, int i) {
+  if (!geo.isRegular(i) || topo.isBoundaryVertex(i)) return 0;
+  return (4 * c.H[i] * c.H[i] - 2 * c.K[i]) * geo.vertexArea[i];
+}
+
 }  // namespace elastica

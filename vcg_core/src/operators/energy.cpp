@@ -7,8 +7,7 @@ double totalCurvatureEnergy(const Topology& topo, const Geometry& geo, const Cur
                             const std::vector<std::uint8_t>* active) {
   const int nv = topo.vertexCount();
   return parallelSum(nv, [&](int i) {
-    if (!geo.isRegular(i) || topo.isBoundaryVertex(i) || (active && !(*active)[i])) return 0.0;
-    return (4 * c.H[i] * c.H[i] - 2 * c.K[i]) * geo.vertexArea[i];
+    return active && !(*active)[i] ? 0.0 : vertexCurvatureEnergy(topo, geo, c, i);
   });
 }
 

@@ -1,5 +1,6 @@
 #include "restoration/patch_remeshing.h"
 #include "restoration/submesh.h"
+#include "support/parallel.h"
 
 #include <algorithm>
 #include <iterator>
@@ -158,29 +159,33 @@ class PatchEditor {
   }
 
   // Moves each movable vertex toward the mean of its neighbours, within the tangent plane of its
-  // area-weighted normal (so the patch keeps its shape to first order). One Jacobi pass; a move
-  // that would turn one of the vertex's faces over (against the neighbours' current positions)
-  // is halved until it does not, or dropped.
+  // area-weighted normal (so the patch keeps its shape to first order). One Jacobi pass (each
+  // vertex reads the positions before the pass only, so the vertices run in parallel and the
+  // result does not depend on the thread count); a move that would turn one of the vertex's faces
+  // over (against the neighbours' current positions) is halved until it does not, or dropped.
+  // Parallel since relaxing was half of the remeshing to the border's density on the
+  // armadillo's 1,978-edge hole (3.2 s of 7.1 s, 25 passes over 190,000 vertices).
   void relax() {
-    std::vector<Vec3> next = m_.positions;
-    for (int v = 0; v < m_.vertexCount(); ++v) {
-      if (!movable_[v] || vertexFaces_[v].empty()) continue;
+    next_ = m_.positions;
+    parallelFor(m_.vertexCount(), [&](int v) {
+      if (!movable_[v] || vertexFaces_[v].empty()) return;
+      thread_local std::vector<int> ring;  // one buffer per thread: an allocation per vertex showed in profiles
       Vec3 n = Vec3::Zero();
       for (int f : vertexFaces_[v]) n += normalOf(f, v, m_.positions[v]);
-      neighbours(v, ring_);
+      neighbours(v, ring);
       Vec3 c = Vec3::Zero();
-      for (int u : ring_) c += m_.positions[u];
-      Vec3 delta = c / static_cast<double>(ring_.size()) - m_.positions[v];
+      for (int u : ring) c += m_.positions[u];
+      Vec3 delta = c / static_cast<double>(ring.size()) - m_.positions[v];
       const double nn = n.squaredNorm();
       if (nn > 0) delta -= delta.dot(n) / nn * n;
       for (int halving = 0; halving < 4; ++halving, delta *= 0.5) {
         if (keepsFacesTurned(v, m_.positions[v] + delta)) {
-          next[v] += delta;
+          next_[v] += delta;
           break;
         }
       }
-    }
-    m_.positions.swap(next);
+    });
+    m_.positions.swap(next_);
   }
 
   // Drops dead faces (filling their slots with faces from the end, so every slot below the
@@ -280,8 +285,8 @@ class PatchEditor {
     neighbours(v, out);
     return out;
   }
-  // The same into `out` (relax() reuses one buffer: an allocation per vertex and pass showed in
-  // profiles of large patches).
+  // The same into `out` (relax() reuses one buffer per thread: an allocation per vertex and pass
+  // showed in profiles of large patches).
   void neighbours(int v, std::vector<int>& out) const {
     out.clear();
     for (int f : vertexFaces_[v])
@@ -308,7 +313,7 @@ class PatchEditor {
   double scale_;
   std::vector<std::uint8_t> faceAlive_;
   std::vector<std::vector<int>> vertexFaces_;
-  std::vector<int> ring_;  // relax()'s neighbour list, reused
+  std::vector<Vec3> next_;  // relax()'s new positions, reused
   // compact() refills dead slots from the end of the face list: while the patch keeps at least as
   // many faces as it has slots before the last face outside it, no face outside it moves.
   int minPatchFaces_ = 0, livePatchFaces_ = 0;
