@@ -151,23 +151,23 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   lastStepShortened_ = overshoot > 1;
   if (lastStepShortened_ && !state.options().shortenJumps) return reject();
   const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;
-  // The normals of the state the step was solved on: geo's own change as positions move.
-  normalBefore_ = geo.vertexNormal;
-  held_.assign(nv, 0);
-  double largest = 0;
-  for (int round = 0;; ++round) {
-    largest = 0;
-    for (int v = 0; v < nv; ++v) {
-      const int r = freeIndex_[v];
-      if (r < 0) continue;
-      const double d = held_[v] ? 0.0 : scale * delta[r];
-      positions[v] = saved_[v] + d * normalBefore_[v];
-      largest = std::max(largest, std::abs(d));
-    }
-    state.invalidate();
-    if (acceptable(state, energyLimit)) break;
-    if (round == kMaxHoldRounds || !holdCulprits(state, energyBefore, energyLimit)) return reject();
+  for (int v = 0; v < nv; ++v) {
+    const int r = freeIndex_[v];
+    if (r >= 0) positions[v] += scale * delta[r] * geo.vertexNormal[v];
   }
+  state.invalidate();
+  // A failed check that a few vertices account for: those go back to where they were (held_),
+  // the rest of the step stays, and the step is judged again.
+  held_.assign(nv, 0);
+  for (int round = 0; !acceptable(state, energyLimit); ++round) {
+    if (round == kMaxHoldRounds || !holdCulprits(state, energyBefore, energyLimit)) return reject();
+    for (int v = 0; v < nv; ++v)
+      if (held_[v]) positions[v] = saved_[v];
+    state.invalidate();
+  }
+  double largest = 0;
+  for (int v = 0; v < nv; ++v)
+    if (freeIndex_[v] >= 0 && !held_[v]) largest = std::max(largest, scale * std::abs(delta[freeIndex_[v]]));
   lastNormalStep_ = largest;
   lastEnergyDecrease_ = energyBefore - state.energy();
 
@@ -197,7 +197,7 @@ bool SemiImplicitIntegrator::acceptable(FlowState& state, double energyLimit) {
   const Geometry& geo = state.geometryOnly();
   const std::vector<std::uint8_t>& activeFace = state.roles().activeFace;
   for (int f = 0; f < state.topology().faceCount(); ++f)
-    if (activeFace[f] && geo.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return false;
+    if (activeFace[f] && turnedOver(geo, f)) return false;
   const double e = state.energy();
   if (!std::isfinite(e)) return false;
   // The Laplacian-of-H flow is not a descent of E: it is judged by not creating folds only.
@@ -225,7 +225,7 @@ bool SemiImplicitIntegrator::holdCulprits(FlowState& state, double energyBefore,
   const Geometry& geo = state.geometryOnly();
   const std::vector<std::uint8_t>& activeFace = state.roles().activeFace;
   for (int f = 0; f < topo.faceCount(); ++f) {
-    if (!activeFace[f] || geo.faceNormal[f].dot(faceNormalBefore_[f]) >= 0) continue;
+    if (!activeFace[f] || !turnedOver(geo, f)) continue;
     if (static_cast<int>(culprits_.size()) + 3 > kMaxCulprits) return false;  // a step too large, not a few faces
     for (int v : faces[f]) culprits_.push_back(v);
   }

@@ -41,6 +41,8 @@ class SemiImplicitIntegrator {
   void buildRows(const FlowState& state);
   /// δ for the assembled system (into solver_->delta); false if the matrix does not factor.
   bool solve();
+  /// Whether face f's normal turned against faceNormalBefore_ (the normals before the step).
+  bool turnedOver(const Geometry& geo, int f) const { return geo.faceNormal[f].dot(faceNormalBefore_[f]) < 0; }
   /// Evaluates the moved positions: no active face turned over since faceNormalBefore_, finite
   /// energy, at most `energyLimit` (elastica).
   bool acceptable(FlowState& state, double energyLimit);
@@ -66,7 +68,7 @@ class SemiImplicitIntegrator {
   long long connectivityVersion_ = -1;  // of the state that freeIndex_ and the solver were built for
   std::vector<int> freeIndex_;    // vertex → row of the system, or -1
   std::vector<double> lh_, speed_;
-  std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_, normalBefore_, drift_;
+  std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_, drift_;
   std::vector<double> vertexEnergyBefore_, vertexEnergyAfter_;
   std::vector<std::uint8_t> held_;  // free vertices the current attempt keeps in place
   std::vector<int> culprits_;

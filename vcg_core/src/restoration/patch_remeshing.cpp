@@ -169,7 +169,7 @@ class PatchEditor {
     next_ = m_.positions;
     parallelFor(m_.vertexCount(), [&](int v) {
       if (!movable_[v] || vertexFaces_[v].empty()) return;
-      thread_local std::vector<int> ring;  // one buffer per thread: an allocation per vertex showed in profiles
+      thread_local std::vector<int> ring;  // see neighbours(v, out)
       Vec3 n = Vec3::Zero();
       for (int f : vertexFaces_[v]) n += normalOf(f, v, m_.positions[v]);
       neighbours(v, ring);
