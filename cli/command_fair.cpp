@@ -81,7 +81,8 @@ void runFair(FairArgs& a) {
 
   std::printf("%s: %d vertices, %d faces -> %d vertices, %d faces\n", a.input.c_str(), inVertices, inFaces,
               mesh.vertexCount(), mesh.faceCount());
-  std::printf("flow %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(a.flow.flow), report.steps, report.seconds,
+  std::printf("flow %s, scheme %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(a.flow.flow),
+              app::nameOf(report.scheme), report.steps, report.seconds,
               app::nameOf(report.stop), report.stages.size(), report.stages.size() == 1 ? "" : "s");
   std::printf("energy %.9g -> %.9g\n", report.energyInitial, report.energyFinal);
   std::printf("wrote %s\n", a.output.c_str());

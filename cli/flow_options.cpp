@@ -27,7 +27,9 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
                  "elastica (default: F = -Lap H - 2H(H^2-K)), lmc (F = -Lap H) or bilaplacian (P -= tau U0^2 P)")
       ->transform(CLI::CheckedTransformer(app::nameMap<FlowType>(), CLI::ignore_case));
   cmd.add_option("--scheme", opt.scheme,
-                 "semi-implicit (default: adaptive, implicit in the 4th-order part, with remeshing) or explicit "
+                 "auto (fair's default: vector, or semi-implicit on meshes with handles and under 1000 vertices per "
+                 "handle), vector (implicit in the positions, adaptive steps that move vertices tangentially too, with "
+                 "remeshing), semi-implicit (fill's default: implicit in the 4th-order part, normal moves) or explicit "
                  "(the paper's step; the bilaplacian flow's only scheme)")
       ->transform(CLI::CheckedTransformer(app::nameMap<Scheme>(), CLI::ignore_case));
   cmd.add_option("--max-steps", opt.maxSteps, "step limit over all stages")
@@ -59,12 +61,12 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
     if (opt.flow == FlowType::Bilaplacian && command->count("--scheme") == 0) opt.scheme = Scheme::Explicit;
     const CLI::Option* noRemesh = command->get_option_no_throw("--no-remesh");  // fair's, not fill's
     if (opt.scheme == Scheme::Explicit && noRemesh && noRemesh->count() > 0)
-      throw CLI::ValidationError("--no-remesh", "applies to the semi-implicit scheme only (the explicit one never remeshes)");
-    if (opt.scheme == Scheme::Explicit && command->count("--shape-tol") > 0)
+      throw CLI::ValidationError("--no-remesh", "applies to the vector and semi-implicit schemes only (the explicit one never remeshes)");
+    if (opt.scheme != Scheme::SemiImplicit && command->count("--shape-tol") > 0)
       throw CLI::ValidationError("--shape-tol", "applies to the semi-implicit scheme only (add --scheme semi-implicit)");
-    if (opt.scheme == Scheme::SemiImplicit && command->count("--step-factor") > 0)
+    if (opt.scheme != Scheme::Explicit && command->count("--step-factor") > 0)
       throw CLI::ValidationError("--step-factor",
-                                 "sets the explicit scheme's step only (the semi-implicit scheme adapts its own)");
+                                 "sets the explicit scheme's step only (the other schemes adapt their own)");
   });
 }
 
@@ -77,9 +79,9 @@ void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt) {
       ->check(CLI::NonNegativeNumber);
   cmd.add_flag("--remesh", opt.flipEdges,
                "explicit scheme: dynamic connectivity, flip non-Delaunay edges among moving vertices at every check "
-               "(the semi-implicit scheme does this and more unless --no-remesh)");
+               "(the vector and semi-implicit schemes do this and more unless --no-remesh)");
   cmd.add_flag("--no-remesh{false}", opt.remesh,
-               "semi-implicit scheme: keep the connectivity (no working-resolution floor, no isotropic or "
+               "vector and semi-implicit schemes: keep the connectivity (no working-resolution floor, no isotropic or "
                "curvature-adaptive remeshing, no edge flips, no embedding guard)");
   cmd.add_option("--boundary", opt.boundary,
                  "fixed (default: boundary and next row clamped, G1) or slide (boundary vertices slide along it)")

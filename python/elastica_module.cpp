@@ -396,11 +396,11 @@ PYBIND11_MODULE(elastica, m) {
          ", max_seconds=0, energy_tol=None, tangential=True, boundary='fixed',\n"
          "     remesh=True, flip_edges=False, progress=None) -> (V_out, F_out, report)\n\n"
          "Fairs the mesh with a curvature flow, as `elastica fair`: flow 'elastica' (F = -Lap H - 2H(H^2-K)),\n"
-         "'lmc' or 'bilaplacian'; scheme 'explicit' or 'semi-implicit' (None: the core's default, '" +
+         "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto' (None: the core's default, '" +
          app::nameOf(flowDefaults.scheme) +
          "');\n"
          "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_seconds 0: no limit; energy_tol None: the\n"
-         "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (semi-implicit only): the\n"
+         "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
          "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
          "guard), so F_out may differ from F; False keeps the connectivity (`--no-remesh`). flip_edges: flip\n"
          "non-Delaunay edges at every check (`--remesh`). selected_faces: face indices\n"

@@ -25,13 +25,13 @@ void expectComplete(std::initializer_list<E> all) {
 
 TEST(Choices, EveryEnumeratorHasOneNamedEntry) {
   expectComplete({FlowType::Elastica, FlowType::LaplacianOfMeanCurvature, FlowType::Bilaplacian});
-  expectComplete({Scheme::Explicit, Scheme::SemiImplicit});
+  expectComplete({Scheme::Explicit, Scheme::SemiImplicit, Scheme::Vector, Scheme::Automatic});
   expectComplete({BoundaryMode::Fixed, BoundaryMode::Slide});
   expectComplete({H2KTreatment::Clamp, H2KTreatment::PaperLambda});
   expectComplete({VertexArea::Mixed, VertexArea::Barycentric});
   expectComplete({FillStage::Triangulation, FillStage::Refinement, FillStage::Biharmonic, FillStage::Flow});
   expectComplete({StopReason::Converged, StopReason::Stalled, StopReason::MaxSteps, StopReason::MaxSeconds,
-                  StopReason::Cancelled, StopReason::Diverged, StopReason::Shrunk});
+                  StopReason::Cancelled, StopReason::Diverged, StopReason::Shrunk, StopReason::SelfContact});
 }
 
 // .mlx scripts store a RichEnum as its index: the menus' order is fixed forever.
@@ -39,7 +39,7 @@ TEST(Choices, MeshLabMenusKeepTheirOrder) {
   const FilterSpec fairing = filterSpec(FilterId::Fairing, {});
   EXPECT_EQ(fairing.param("flow")->enumValues,
             (std::vector<std::string>{"Elastica", "Laplacian of mean curvature", "Bilaplacian"}));
-  EXPECT_EQ(fairing.param("scheme")->enumValues, (std::vector<std::string>{"Explicit", "Semi-implicit"}));
+  EXPECT_EQ(fairing.param("scheme")->enumValues, (std::vector<std::string>{"Explicit", "Semi-implicit", "Vector (implicit in positions)", "Automatic"}));
   EXPECT_EQ(fairing.param("boundary")->enumValues, (std::vector<std::string>{"Fixed", "Slide"}));
   EXPECT_EQ(filterSpec(FilterId::Curvature, {}).param("area")->enumValues,
             (std::vector<std::string>{"Mixed", "Barycentric"}));

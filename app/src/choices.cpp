@@ -13,7 +13,9 @@ const std::vector<Choice<FlowType>>& choices<FlowType>() {
 template <>
 const std::vector<Choice<Scheme>>& choices<Scheme>() {
   static const std::vector<Choice<Scheme>> t{{Scheme::Explicit, "explicit", "Explicit"},
-                                             {Scheme::SemiImplicit, "semi-implicit", "Semi-implicit"}};
+                                             {Scheme::SemiImplicit, "semi-implicit", "Semi-implicit"},
+                                             {Scheme::Vector, "vector", "Vector (implicit in positions)"},
+                                             {Scheme::Automatic, "auto", "Automatic"}};
   return t;
 }
 
@@ -50,13 +52,14 @@ const std::vector<Choice<FillStage>>& choices<FillStage>() {
 template <>
 const std::vector<Choice<StopReason>>& choices<StopReason>() {
   static const std::vector<Choice<StopReason>> t{
-      {StopReason::Converged, "converged", "converged at the energy plateau"},
+      {StopReason::Converged, "converged", "converged"},
       {StopReason::Stalled, "stalled", "stalled: no step lowers the energy any more"},
       {StopReason::MaxSteps, "max_steps", "stopped at maxSteps"},
       {StopReason::MaxSeconds, "max_seconds", "stopped at the time limit"},
       {StopReason::Cancelled, "cancelled", "cancelled"},
       {StopReason::Diverged, "diverged", "diverged"},
-      {StopReason::Shrunk, "shrunk", "stopped: the flow shrinks the surface (the comparison flows do)"}};
+      {StopReason::Shrunk, "shrunk", "stopped: the flow shrinks the surface (the comparison flows do)"},
+      {StopReason::SelfContact, "self_contact", "stopped: going on would make the surface cross itself"}};
   return t;
 }
 

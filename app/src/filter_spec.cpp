@@ -37,7 +37,7 @@ ParamSpec floatParam(std::string name, float value, std::string label, std::stri
   return p;
 }
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
-// The time limit's default: the semi-implicit default converges on the 1,839-vertex bunny in
+// The time limit's default: the default scheme converges on the 1,839-vertex bunny in
 // seconds; a run that needs a minute is better stopped and reported than left to freeze MeshLab.
 constexpr float kDefaultMaxSeconds = 60;
 ParamSpec enumParam(std::string name, int value, std::vector<std::string> values, std::string label,
@@ -56,8 +56,8 @@ ParamSpec flowParam() {
 }
 ParamSpec schemeParam(Scheme defaultScheme) {
   return enumParam("scheme", indexOf(defaultScheme), labels<Scheme>(), "Time integration",
-                   "Semi-implicit: few adaptive steps (not for the Bilaplacian). Explicit: the paper's scheme, "
-                   "steps grow as the vertex count squared.");
+                   "Automatic: Vector, or Semi-implicit on coarse meshes with handles. Vector: steps implicit in "
+                   "the positions. Semi-implicit: along the normals. Explicit: the paper's, tiny steps.");
 }
 ParamSpec maxStepsParam() {
   return intParam("maxSteps", int(FlowOptions{}.maxSteps), "Maximum steps",

@@ -15,6 +15,7 @@ nlohmann::json toJson(const FlowReport& r) {
                        {"input_self_intersects", r.inputSelfIntersects}};
   j["seconds"] = r.seconds;
   j["stop"] = nameOf(r.stop);
+  j["scheme"] = nameOf(r.scheme);
   j["min_lambda"] = r.minLambda;
   j["stages"] = nlohmann::json::array();
   for (const FlowStage& s : r.stages)

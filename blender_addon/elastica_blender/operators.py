@@ -212,7 +212,7 @@ def _operator_class(base):
         annotations["keep_connectivity"] = BoolProperty(
             name="Keep connectivity", default=True,
             description="Move vertices only: the polygons, UVs, attributes and shape keys stay. Off: the "
-                        "semi-implicit scheme may remesh (the mesh is then rebuilt as triangles, attributes reset)")
+                        "vector and semi-implicit schemes may remesh (the mesh is then rebuilt as triangles, attributes reset)")
     return type(base.__name__[: -len("_base")], (base, bpy.types.Operator),
                 {"__annotations__": annotations, "params": params})
 

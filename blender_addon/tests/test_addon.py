@@ -80,7 +80,7 @@ def test_registered_with_the_filters_defaults():
         if p["keyword"]:
             assert fair[p["keyword"]].default == p["default"] or math.isclose(fair[p["keyword"]].default, p["default"],
                                                                               rel_tol=1e-6), p
-    assert fair["scheme"].default == "semi-implicit"
+    assert fair["scheme"].default == "auto"
     fill = bpy.ops.mesh.elastica_fill_holes.get_rna_type().properties
     assert fill["max_hole_edges"].default == 500 and fill["select_new_faces"].default
     assert bpy.ops.mesh.elastica_curvature.get_rna_type().properties["area"].default == "mixed"

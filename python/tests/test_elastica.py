@@ -216,7 +216,7 @@ def test_filters_describe_the_meshlab_parameters(tmp_path):
             if p["type"] == "enum":
                 assert p["default"] in p["choices"] and len(p["choices"]) == len(p["labels"])
     fair = {p["name"]: p for p in specs["fair"]["parameters"]}
-    assert fair["scheme"]["default"] == "semi-implicit" and fair["scheme"]["choices"] == ["explicit", "semi-implicit"]
+    assert fair["scheme"]["default"] == "auto" and fair["scheme"]["choices"] == ["explicit", "semi-implicit", "vector", "auto"]
     assert fair["subdivisionLevels"]["min"] == 0 and fair["subdivisionLevels"]["max"] == 8
     assert fair["Selected"]["keyword"] is None and fair["maxSteps"]["keyword"] == "max_steps"
 

@@ -32,7 +32,24 @@ enum class Scheme {
   /// τ, a step accepted only if the energy does not rise, no face flips and no vertex jumps.
   /// Same fixed points as the explicit scheme (δ = 0 iff F = 0). Elastica and Laplacian of H.
   SemiImplicit,
+  /// Linearly implicit in the positions themselves (flow/vector_integrator.h):
+  /// (M + τ/2 C M⁻¹ C) δ = −τ/4 ∂W/∂X with the exact gradient of the discrete bending energy W
+  /// (= E where Δ_B X is normal), one factorisation and three right-hand sides per step. Vertices
+  /// move tangentially as well, so meshes stay even with the connectivity kept; every step is a
+  /// descent direction, so τ grows to the region's own scale. Asked of a comparison flow, fair()
+  /// runs the Laplacian-of-H flow semi-implicit and the bilaplacian flow explicit instead.
+  Vector,
+  /// Vector where the moving region has at least kVectorVerticesPerHandle · (genus + 1) vertices
+  /// (any genus-0 region, a disk included), semi-implicit below: on handles resolved by few edges
+  /// the vector scheme's tangential freedom finds discrete states below the continuum's minimum
+  /// (a genus-2 cage at 1,213 vertices: E 104.6 where the genus-2 minimiser has 112.8; a tube
+  /// torus at 494 vertices: E 57.7 where no torus goes below 8π² ≈ 79), which it does not at
+  /// 6,577 and 15,536 vertices (112.83, 78.93). FlowReport::scheme says which ran.
+  Automatic,
 };
+
+/// Scheme::Automatic's threshold (see there).
+inline constexpr int kVectorVerticesPerHandle = 1000;
 
 /// How vertices on the mesh boundary behave.
 enum class BoundaryMode {
@@ -54,6 +71,10 @@ enum class StopReason {
   /// A comparison flow (bilaplacian, Laplacian of H) shrank the mesh: its mean edge length halved
   /// between two checks or fell to a tenth of the stage's start. The mesh is the last state.
   Shrunk,
+  /// The elastica flow would go on lowering the energy only by making the surface cross itself
+  /// (a knotted tube swelling into itself): every step the embedding guard allowed had shrunk to
+  /// 1e-4 of the stage's largest. The mesh is the last state, which does not cross itself.
+  SelfContact,
 };
 
 /// Progress of a run, given to FlowOptions::progress.
@@ -67,10 +88,12 @@ struct FlowProgress {
 
 struct FlowOptions {
   FlowType flow = FlowType::Elastica;
-  /// Semi-implicit by default: it converges in tens to hundreds of steps where the paper's
-  /// explicit scheme needs N² (docs/benchmarks.md), and with `remesh` it fairs coarse and badly
-  /// shaped meshes (docs/figures.md). The bilaplacian flow has the explicit scheme only.
-  Scheme scheme = Scheme::SemiImplicit;
+  /// Automatic by default, the vector scheme on everything but coarse meshes with handles: whole
+  /// scans that the semi-implicit scheme left at its time limit (cow, dino, bull) converge to round
+  /// spheres in under 200 attempts (docs/benchmarks.md).
+  /// The Laplacian-of-H flow runs semi-implicit, the bilaplacian flow explicit (fair() says so if
+  /// asked otherwise).
+  Scheme scheme = Scheme::Automatic;
   VertexArea area = VertexArea::Mixed;
   CurvatureOptions curvature;  ///< H² − K treatment (clamp by default, or the paper's λ)
   BoundaryMode boundary = BoundaryMode::Fixed;
@@ -109,8 +132,9 @@ struct FlowOptions {
   /// t / A² (A the moving region's area, so the measure depends on neither scale nor resolution)
   /// falls below this. On a noisy 642-vertex sphere 0.05 leaves a radius spread under 0.5 %;
   /// 0.02 took 4× the steps for a spread of 0.26 % (the last slow mode is a mesh redistribution
-  /// that changes E by ~1e-6 relative per 10,000 steps). Both schemes: the explicit one measures
-  /// it every checkInterval steps, the semi-implicit one over its last 10 accepted steps.
+  /// that changes E by ~1e-6 relative per 10,000 steps). The explicit scheme measures it every
+  /// checkInterval steps, the semi-implicit one over its last 10 accepted steps; the vector scheme
+  /// stops on the shape instead (its normal motion over the slowest mode's time), not on this.
   double energyTolerance = 0.05;
   /// Subdivide (if levels remain) when the same rate falls below this (near steady state).
   double subdivisionTolerance = 0.05;
@@ -192,6 +216,8 @@ struct FlowReport {
   double seconds = 0;
   double minLambda = 1;
   StopReason stop = StopReason::Converged;
+  /// The scheme that ran (Scheme::Automatic resolved; the comparison flows' own).
+  Scheme scheme = Scheme::Vector;
   std::vector<FlowStage> stages;
   std::vector<EnergySample> history;
   /// fair(mesh, region, …): the region's faces in the output mesh, ascending (after subdivision,

@@ -5,6 +5,7 @@
 #include "flow/flow_state.h"
 #include "flow/mesh_quality_stage.h"
 #include "flow/semi_implicit_integrator.h"
+#include "flow/vector_integrator.h"
 #include "mesh/self_intersection.h"
 
 #include <algorithm>
@@ -41,6 +42,11 @@ constexpr double kSubdivisionPlateauFactor = 100;
 // the step (τ/2 · λ ≥ 1): the first eigenvalue of Δ² on a clamped disk of area A is ≈ 1030/A²,
 // so 50 leaves a 10× margin for other shapes. See FlowOptions::shapeTolerance.
 constexpr double kShapeScaleFactor = 50;
+// The vector scheme stops as converged when two steps in a row show normal motion that, carried
+// on over the slowest mode's relaxation time, moves no vertex by more than this many mean edge
+// lengths (ten times more before a refinement). A round sphere of 4,000 vertices has about 12
+// edges per radius: 0.01 ℓ is under 0.1 % of it.
+constexpr double kVectorShapeTolerance = 0.01;
 
 void validate(const FlowOptions& o) {
   auto bad = [](const std::string& what) { throw InvalidInputError("fair: " + what); };
@@ -91,6 +97,14 @@ struct Run {
     report.stop = StopReason::Cancelled;
     return stopped = true;
   }
+};
+
+// Adds an integrator's embedding-guard refusals to the report however a stage ends.
+template <class Integrator>
+struct CountCrossings {
+  const Integrator& integrator;
+  FlowReport& report;
+  ~CountCrossings() { report.crossingRejections += integrator.crossingRejections(); }
 };
 
 // Relative energy change per unit of normalised time t/A² (A the moving region's area), the
@@ -187,11 +201,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
                        bool guardEmbedding, double& lastTau) {
   SemiImplicitIntegrator integrator;
   integrator.guardEmbedding(guardEmbedding);
-  struct CountCrossings {  // however the stage ends
-    const SemiImplicitIntegrator& integrator;
-    FlowReport& report;
-    ~CountCrossings() { report.crossingRejections += integrator.crossingRejections(); }
-  } countCrossings{integrator, run.report};
+  const CountCrossings<SemiImplicitIntegrator> countCrossings{integrator, run.report};
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;
   const double ell4 = ell * ell * ell * ell;
@@ -243,11 +253,147 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   }
 }
 
+// max over free vertices of κ·ℓ_i (κ = |H| + √max(H² − K, 0), ℓ_i the mean length of the vertex's
+// edges): above kNeckCurvatureTimesEdge the discrete energy no longer sees what bending there
+// costs (as needsRemeshing()).
+double largestCurvatureTimesEdge(FlowState& state) {
+  const Topology& topo = state.topology();
+  const Geometry& geo = state.geometry();
+  const Curvature& c = state.curvature();
+  const std::vector<std::uint8_t>& free = state.roles().free;
+  double largest = 0;
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    if (!free[v] || topo.valence(v) == 0) continue;
+    double ell = 0;
+    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ell += geo.edgeLength[topo.ringEdge(k)];
+    const double kappa = std::abs(c.H[v]) + std::sqrt(std::max(c.H[v] * c.H[v] - c.K[v], 0.0));
+    largest = std::max(largest, kappa * ell / topo.valence(v));
+  }
+  return largest;
+}
+
+// The vector scheme (flow/vector_integrator.h) with adaptive τ (×2 after a step, ×0.5 after a
+// refusal, below the last refused size). "Converged" is a statement about the shape at the flow's
+// own time scale, the relaxation time T = A²/kShapeScaleFactor of the moving region's slowest
+// bending mode (A its area): two accepted steps in a row whose normal motion, carried on for T
+// (at τ ≥ T the step itself), moves no vertex by more than `shapeTolerance` mean edge lengths. An
+// energy plateau is not used: near a round sphere E is so flat that a 2 % ellipsoid reads as
+// converged by any energy rate that a torus's slow mesh drift does not also trip. The state with
+// the lowest energy E is kept (`best`). Ends SelfContact when refusals by the embedding guard
+// drove τ to kStuckFactor of the stage's largest accepted step.
+// Returns false if the stage ended because the mesh, not the shape, holds the flow back: a neck
+// forming (κℓ above 0.6 and above 1.25× its value at the stage's start: the energy would let it
+// pinch for free, a torus's hole closing at E 60 where no torus goes below 8π² ≈ 79), or τ fell to
+// kStuckFactor of the stage's largest accepted step for other refusals (a mesh distorted by a
+// large change of shape). The caller remeshes and flows again; report.stop says Stalled.
+bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeTolerance, bool guardEmbedding,
+                 double& lastTau, TriMesh& best, double& bestEnergy, bool& neckFormed) {
+  neckFormed = false;
+  constexpr double kGrowVector = 2, kStuckFactor = 1e-4;
+  VectorIntegrator integrator;
+  integrator.guardEmbedding(guardEmbedding);
+  const CountCrossings<VectorIntegrator> countCrossings{integrator, run.report};
+  FlowReport& report = run.report;
+  const double ell = state.geometry().meanEdgeLength;
+  const double ell4 = ell * ell * ell * ell;
+  const double area0 = state.activeArea();
+  const double shapeTime = area0 * area0 / kShapeScaleFactor;
+  double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
+  double ceiling = std::numeric_limits<double>::infinity();
+  int settled = 0;
+  double largestTau = 0;
+  int crossingsInARow = 0;
+  TriMesh beforeFlips;
+  constexpr double kNeckCurvatureTimesEdge = 0.6, kNeckGrowth = 1.25;
+  const double neckLimit = std::max(kNeckCurvatureTimesEdge, kNeckGrowth * largestCurvatureTimesEdge(state));
+  bestEnergy = state.energy();
+  best = state.mesh();
+  while (!run.limitReached()) {
+    ++report.steps;
+    if (!integrator.tryStep(state, tau)) {
+      ++report.rejectedSteps;
+      crossingsInARow = integrator.lastRejectionCrossed() ? crossingsInARow + 1 : 0;
+      ceiling = tau;
+      tau *= kShrink;
+      if (tau < kSmallestTau * ell4 || tau < kStuckFactor * largestTau) {
+        if (crossingsInARow > 0) {
+          report.stop = StopReason::SelfContact;
+          return true;
+        }
+        report.stop = StopReason::Stalled;
+        return false;
+      }
+      continue;
+    }
+    // Edge flips are not steps: the embedding guard judges them too (a flip on knot1's swollen
+    // tube once left four faces crossing), and flips that make faces cross are undone.
+    const long long version = state.connectivityVersion();
+    if (guardEmbedding) beforeFlips = state.mesh();
+    state.maintain(area0);
+    if (guardEmbedding && state.connectivityVersion() != version && selfIntersects(state.mesh(), &state.roles().activeFace)) {
+      FlowOptions noFlips = state.options();  // for the rest of the stage (flips that cross come back)
+      noFlips.flipEdges = false;
+      state = FlowState(beforeFlips, state.selection(), noFlips, state.slider());
+      state.maintain(area0);
+    }
+    ++stage.steps;
+    run.time += tau * integrator.lastExtrapolation();
+    const double accepted = tau * integrator.lastExtrapolation();
+    lastTau = tau;
+    largestTau = std::max(largestTau, accepted);
+    if (!integrator.lastStepShortened()) tau = std::min(tau * kGrowVector, kCeilingMargin * ceiling);
+    ceiling *= kCeilingGrow;
+    const double energy = state.energy();
+    if (run.record(state, stage.level, energy)) return true;
+    if (largestCurvatureTimesEdge(state) > neckLimit) {
+      // The energy from here on is the mesh's, not the surface's: this state is not kept.
+      report.stop = StopReason::Stalled;
+      neckFormed = true;
+      return false;
+    }
+    if (energy < bestEnergy) {
+      bestEnergy = energy;
+      best = state.mesh();
+    }
+    // The normal motion this step shows, carried on over the slowest mode's time T: at τ ≥ T the
+    // step itself (it relaxes every mode at once), below it the normal speed times T.
+    const double ellNow = state.geometry().meanEdgeLength;
+    const double predicted = integrator.lastNormalMove() * std::max(1.0, shapeTime / accepted);
+    settled = !integrator.lastStepShortened() && predicted <= shapeTolerance * ellNow ? settled + 1 : 0;
+    if (settled >= 2) {
+      report.stop = StopReason::Converged;
+      return true;
+    }
+  }
+  return true;
+}
+
+// Scheme::Automatic: the vector scheme unless the region has handles resolved by fewer than
+// kVectorVerticesPerHandle vertices each (the genus of a closed mesh; a region with a border
+// counts as a disk, as workingResolutionFloor does). Judged on the input, before any subdivision:
+// the subdivisions asked for (FlowOptions::subdivisionLevels) count, four times the vertices each.
+Scheme automaticScheme(const TriMesh& mesh, const std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt) {
+  const int floor = workingResolutionFloor(mesh);  // 100 · (genus + 1)
+  const int handlesPlusOne = floor / 100;
+  if (handlesPlusOne <= 1) return Scheme::Vector;
+  const std::vector<std::uint8_t> none;
+  long long moving = movingVertexCount(mesh, faceSelected ? *faceSelected : none, opt.boundary);
+  for (int l = 0; l < opt.subdivisionLevels; ++l) moving *= 4;
+  return moving >= static_cast<long long>(kVectorVerticesPerHandle) * handlesPlusOne ? Scheme::Vector
+                                                                                     : Scheme::SemiImplicit;
+}
+
 }  // namespace
 
-FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt) {
-  validate(opt);
+FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& requested) {
+  validate(requested);
+  // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
+  FlowOptions opt = requested;
+  if (opt.scheme == Scheme::Automatic) opt.scheme = automaticScheme(mesh, faceSelected, opt);
+  if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
+  if (opt.scheme == Scheme::Vector && opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;
   FlowReport report;
+  report.scheme = opt.scheme;
   Run run{opt, report};
 
   std::vector<std::uint8_t> selection = faceSelected ? *faceSelected : std::vector<std::uint8_t>{};
@@ -260,7 +406,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
 
   // The semi-implicit pipeline keeps the mesh fit for the operators (FlowOptions::remesh,
   // flow/mesh_quality_stage.h): first the working-resolution floor, within the levels asked for.
-  const bool quality = opt.scheme == Scheme::SemiImplicit && opt.remesh;
+  const bool quality = opt.scheme != Scheme::Explicit && opt.remesh;
   FlowOptions stageOpt = opt;
   if (quality) stageOpt.flipEdges = true;
   int level = 0;
@@ -274,6 +420,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   bool first = true, adaptive = false;
   double lastTau = 0;  // the semi-implicit scheme's last accepted step, carried into the next stage
   int reflows = 0;
+  TriMesh best;  // the vector scheme's lowest-energy state of the current stage
+  double bestEnergy = 0;
   if (quality && remeshMovingRegion(mesh, selection, opt.boundary, false)) ++report.remeshings;
   for (;; ++level) {
     if (adaptive && remeshMovingRegion(mesh, selection, opt.boundary, true)) ++report.remeshings;
@@ -293,12 +441,19 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
       first = false;
     }
     FlowStage stage;
+    bool meshBound = false;  // the vector scheme's stage ended because the mesh held it back
     stage.level = level;
     stage.vertices = state.mesh().vertexCount();
     stage.faces = state.mesh().faceCount();
     try {
       if (opt.scheme == Scheme::Explicit) {
         explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
+      } else if (opt.scheme == Scheme::Vector) {
+        bool neckFormed = false;
+        meshBound = !vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
+                                 quality && !report.inputSelfIntersects, lastTau, best, bestEnergy, neckFormed);
+        // The stage's output is its lowest-energy state before any neck formed.
+        if (neckFormed || bestEnergy < state.energy()) state = FlowState(best, selection, stageOpt, slider.get());
       } else {
         const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
         semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, plateau,
@@ -316,7 +471,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     // A limit reached just as the stage converged stops the run before it subdivides: a finer
     // mesh costs four times the memory and work, and its stage could not take a step.
     if (run.stopped || run.limitReached()) break;
-    if (quality && reflows < kMaxReflows && needsRemeshing(mesh, selection, opt.boundary)) {
+    if (quality && reflows < kMaxReflows && (meshBound || needsRemeshing(mesh, selection, opt.boundary))) {
       ++reflows;  // remesh and flow this level again
       adaptive = true;
       --level;

@@ -27,6 +27,9 @@ class FlowState {
   const TriMesh& mesh() const { return mesh_; }
   const Topology& topology() const { return topo_; }
   const VertexRoles& roles() const { return roles_; }
+  /// The face selection and the boundary slider the state was made with (to make it again).
+  const std::vector<std::uint8_t>& selection() const { return selection_; }
+  BoundarySlider* slider() const { return slider_; }
   /// A number no other connectivity of any state had: it changes whenever this state's topology
   /// and roles are rebuilt, so an integrator knows when its per-topology data is stale.
   long long connectivityVersion() const { return connectivityVersion_; }

@@ -110,4 +110,20 @@ void SemiImplicitSystem::assembleMatrix(const Topology& topo, const std::vector<
   }
 }
 
+void SemiImplicitSystem::addEdgeLaplacian(const Topology& topo, const std::vector<double>& edgeWeight,
+                                          const std::vector<int>& freeIndex, double scale) {
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    const double w = scale * edgeWeight[e];
+    if (w == 0) continue;
+    const auto& ev = topo.edgeVertices(e);
+    const int a = freeIndex[ev[0]], b = freeIndex[ev[1]];
+    if (a >= 0) K_.coeffRef(a, a) += w;
+    if (b >= 0) K_.coeffRef(b, b) += w;
+    if (a >= 0 && b >= 0) {
+      K_.coeffRef(a, b) -= w;
+      K_.coeffRef(b, a) -= w;
+    }
+  }
+}
+
 }  // namespace elastica

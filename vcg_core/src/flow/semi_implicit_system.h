@@ -31,6 +31,11 @@ class SemiImplicitSystem {
   void assembleMatrix(const Topology& topo, const std::vector<double>& edgeWeight, const std::vector<double>& vertexArea,
                       const std::vector<std::uint8_t>& active, const std::vector<int>& freeIndex, int n, double mass,
                       double scale);
+  /// Adds scale · Σ_edges w_e (x_i − x_j)² to the assembled matrix: scale · w_e on the diagonals
+  /// of the edge's free ends and −scale · w_e between them (a weighted graph Laplacian, positive
+  /// semidefinite for w ≥ 0), `edgeWeight` per edge of `topo`. Call after assembleMatrix().
+  void addEdgeLaplacian(const Topology& topo, const std::vector<double>& edgeWeight, const std::vector<int>& freeIndex,
+                        double scale);
   /// Forgets the pattern: call when the connectivity or the free vertices change.
   void reset() { patterned_ = false; }
 
