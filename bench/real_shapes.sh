@@ -68,6 +68,18 @@ if ((page)); then
   commit=$(git -C "$root" rev-parse --short HEAD)
   {
     echo "<!-- real-shapes: written by bench/real_shapes.sh --page; do not edit by hand -->"
+    cat <<'TEXT'
+Whole closed scans from Debian's libcgal-demo, each faired by `elastica fair` with the
+semi-implicit scheme (the default until issue 28) and with `auto`, today's default (the vector
+scheme, or the semi-implicit one on meshes with handles and under 1,000 vertices per handle: the
+elephant, the elk). Attempts count refused steps too; E is the total curvature energy (a round
+sphere: 8π ≈ 25.13); *crossing faces* is vcglib's self-intersection test on the output (the cow's
+input already has 137); *spread* is (max − min)/r of the vertices' distances to the least-squares
+sphere. Stops: `converged` (the shape stopped changing at the flow's time scale), `self_contact`
+(the surface pressed against itself for 10 steps, or only crossing itself would lower E),
+`stalled`, `max_seconds`. Genus −1: the file has two components.
+
+TEXT
     echo "Commit $commit (with the working tree's changes, if any), $(date -u +%Y-%m-%dT%H:%MZ), load average before the run $(cut -d' ' -f1-3 /proc/loadavg); one run per row, 60 s limit, \`elastica fair IN -o OUT --scheme S --max-seconds 60\`."
     echo
     cat "$table"

@@ -63,6 +63,8 @@ rev=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
 dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v -e '^?? ' -e 'docs/benchmarks.md' | wc -l || true)
 [[ $dirty == 0 ]] || rev="$rev (with uncommitted changes)"
 
+# The real-shape section has its own, slower run (bench/real_shapes.sh --page): kept as it was.
+real_shapes=$(sed -n '/^<!-- real-shapes/,/^<!-- \/real-shapes -->/p' "$page" 2>/dev/null || true)
 {
   cat "$root/bench/benchmarks_header.md"
   cat <<EOF
@@ -155,5 +157,8 @@ R/r is a least-squares fit of a torus of revolution, E the flow's own.
 EOF
   cat "$tmp/resolution.md"
   cat "$root/bench/benchmarks_footer.md"
+  if [[ -n $real_shapes ]]; then
+    printf '\n## Real shapes: the default fair on libcgal-demo scans\n\n%s\n' "$real_shapes"
+  fi
 } >"$page"
 echo "run_benchmarks: wrote $page" >&2

@@ -302,7 +302,8 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
   double ceiling = std::numeric_limits<double>::infinity();
   int settled = 0;
   double largestTau = 0;
-  int crossingsInARow = 0;
+  int crossingsInARow = 0, contactSteps = 0;
+  constexpr int kContactSteps = 10;
   TriMesh beforeFlips;
   constexpr double kNeckCurvatureTimesEdge = 0.6, kNeckGrowth = 1.25;
   const double neckLimit = std::max(kNeckCurvatureTimesEdge, kNeckGrowth * largestCurvatureTimesEdge(state));
@@ -324,6 +325,15 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
         return false;
       }
       continue;
+    }
+    // A surface pressed against itself step after step (a knotted tube swelling into itself) has
+    // no embedded way to go on lowering E: kContactSteps accepted steps in a row that held
+    // vertices back from crossing end the stage. A contact that passes (a limb brushing the body
+    // on its way in) does not.
+    contactSteps = integrator.lastStepHeldContact() ? contactSteps + 1 : 0;
+    if (contactSteps >= kContactSteps) {
+      report.stop = StopReason::SelfContact;
+      return true;
     }
     // Edge flips are not steps: the embedding guard judges them too (a flip on knot1's swollen
     // tube once left four faces crossing), and flips that make faces cross are undone.

@@ -33,6 +33,9 @@ constexpr double kCurvatureStiffness = 8;
 // scheme's holdCulprits). The dino lost 9 attempts in a row to one face turning over, and the
 // ×0.5 that each refusal cost τ took 30 more steps to win back.
 constexpr int kMaxCulprits = 16, kMaxHoldRounds = 3;
+// Faces about to cross hold their corners (and rings) too; a contact zone spans more vertices than
+// a turned face does.
+constexpr int kMaxContactCulprits = 4 * kMaxCulprits;
 // An accepted step is carried on along its direction to at most this many times its length while
 // W keeps falling (VectorIntegrator::tryStep).
 constexpr double kMaxExtrapolation = 8;
@@ -80,6 +83,7 @@ bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
 bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   std::vector<Vec3>& positions = state.positions();
   lastRejectionCrossed_ = false;
+  lastStepHeldContact_ = false;
   lastExtrapolation_ = 1;
   auto reject = [&] {
     positions = saved_;
@@ -141,11 +145,26 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     const double after = turned ? before : bendingEnergy(topo, moved, positions, active, bending_);
     if (!std::isfinite(after)) return reject();
     const bool rose = after > before + kEnergySlack * std::abs(before);
+    bool crossed = false;
     if (!turned && !rose) {
-      energyAfter_ = after;
-      break;
+      // Faces that would cross: their free corners are held where they were (not crossing), and
+      // the rest of the step goes on. A swelling limb that reaches the body stops there, and
+      // the rest of the surface keeps flowing (homer: held, E 193 → ...; refused, the run
+      // ended at E 193 in 63 attempts).
+      if (guardEmbedding_)
+        for (int f : selfIntersectingFaces(state.mesh(), &activeFace))
+          for (int v : topo.faces()[f]) culprits_.push_back(v), crossed = true;
+      if (!crossed) {
+        energyAfter_ = after;
+        break;
+      }
     }
-    if (round == kMaxHoldRounds || static_cast<int>(culprits_.size()) > kMaxCulprits) return reject();
+    lastStepHeldContact_ = lastStepHeldContact_ || crossed;
+    const int allowed = crossed ? kMaxContactCulprits : kMaxCulprits;
+    if (round == kMaxHoldRounds || static_cast<int>(culprits_.size()) > allowed) {
+      if (crossed) ++crossingRejections_, lastRejectionCrossed_ = true;
+      return reject();
+    }
     if (rose) {  // the vertices whose terms rose most, until they make up the rise
       rises_.clear();
       for (int v = 0; v < nv; ++v) {
@@ -194,12 +213,14 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     for (int v = 0; v < nv; ++v)
       if (freeIndex_[v] >= 0) positions[v] = saved_[v] + alpha * delta_[v];
     state.invalidate();
+    if (alpha > 1 && guardEmbedding_ && selfIntersects(state.mesh(), &activeFace)) {
+      alpha = 1;  // the step itself passed the guard
+      for (int v = 0; v < nv; ++v)
+        if (freeIndex_[v] >= 0) positions[v] = saved_[v] + scale * delta_[v];
+      state.invalidate();
+      energyAfter_ = bendingEnergy(topo, state.geometryOnly(), positions, active, bending_);
+    }
     lastExtrapolation_ = alpha;
-  }
-  if (guardEmbedding_ && selfIntersects(state.mesh(), &activeFace)) {
-    ++crossingRejections_;
-    lastRejectionCrossed_ = true;
-    return reject();
   }
   double largest = 0, largestNormal = 0;
   for (int v = 0; v < nv; ++v) {
