@@ -80,7 +80,7 @@ sphere. Stops: `converged` (the shape stopped changing at the flow's time scale)
 `stalled`, `max_seconds`. Genus −1: the file has two components.
 
 TEXT
-    echo "Commit $commit (with the working tree's changes, if any), $(date -u +%Y-%m-%dT%H:%MZ), load average before the run $(cut -d' ' -f1-3 /proc/loadavg); one run per row, 60 s limit, \`elastica fair IN -o OUT --scheme S --max-seconds 60\`."
+    echo "Commit $commit (with the working tree's changes, if any), $(date -u +%Y-%m-%dT%H:%MZ), load average at the end of the run $(cut -d' ' -f1-3 /proc/loadavg); one run per row, 60 s limit, \`elastica fair IN -o OUT --scheme S --max-seconds 60\`."
     echo
     cat "$table"
     echo "<!-- /real-shapes -->"
