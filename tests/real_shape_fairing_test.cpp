@@ -40,7 +40,9 @@ TEST_P(RealShape, GenusZeroScanBecomesARoundSphere) {
   EXPECT_EQ(r.stop, StopReason::Converged);
   EXPECT_LE(r.steps, 200);
   EXPECT_EQ(genus(m), 0);
-  if (!inputCrossed) EXPECT_EQ(test::selfIntersections(m), 0);
+  if (!inputCrossed) {
+    EXPECT_EQ(test::selfIntersections(m), 0);
+  }
   EXPECT_LT(test::fittedRadii(m).spread(), 0.01);
   EXPECT_NEAR(test::energyOf(m), 8 * M_PI, 0.03 * 8 * M_PI);
   EXPECT_NEAR(r.energyFinal, test::energyOf(m), 1e-9 * r.energyFinal);

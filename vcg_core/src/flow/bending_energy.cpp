@@ -16,6 +16,12 @@ namespace {
 constexpr double kBarrierCot = 5.6712818196177066;  // cot 10°
 constexpr double kBarrierWeight = 1;
 
+// The barrier's term at a corner of cotangent `cot` (double or Dual).
+template <class T>
+T barrier(const T& cot) {
+  return cot > kBarrierCot ? T(kBarrierWeight * (cot - kBarrierCot) * (cot - kBarrierCot)) : T(0);
+}
+
 using Partials = Eigen::Matrix<double, 9, 1>;
 using Dual = Eigen::AutoDiffScalar<Partials>;
 using DualVec = Eigen::Matrix<Dual, 3, 1>;
@@ -41,8 +47,7 @@ void faceGradient(const Vec3 (&x)[3], const Vec3 (&z)[3], const double (&zz)[3],
     obtuse[k] = dot[k].value() < 0;
   }
   Dual f = 0;
-  for (int k = 0; k < 3; ++k)
-    if (cot[k].value() > kBarrierCot) f += kBarrierWeight * (cot[k] - kBarrierCot) * (cot[k] - kBarrierCot);
+  for (int k = 0; k < 3; ++k) f += barrier(cot[k]);
   for (int k = 0; k < 3; ++k) {
     if (w[k] == 0) continue;  // z_k = 0 as well: the vertex carries no term
     const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
@@ -74,29 +79,20 @@ double bendingEnergy(const Topology& topo, const Geometry& geo, const std::vecto
     out.y[i] = y;
     return out.term[i] = y.squaredNorm() / geo.vertexArea[i] - 2 * (2 * M_PI - geo.angleSum[i]);
   });
+  // The barrier, over the faces with a counted corner (those bendingGradient differentiates); a
+  // third of each face's share goes to each corner's term, for the culprit search.
   const auto& faces = topo.faces();
-  out.value += parallelSum(topo.faceCount(), [&](int f) {
-    if (!(geo.faceArea[f] > 0)) return 0.0;
+  for (int f = 0; f < topo.faceCount(); ++f) {
     const Face& t = faces[f];
-    if (!countedInBending(topo, geo, active, t[0]) && !countedInBending(topo, geo, active, t[1]) &&
-        !countedInBending(topo, geo, active, t[2]))
-      return 0.0;
+    if (!(geo.faceArea[f] > 0) || !(countedInBending(topo, geo, active, t[0]) ||
+                                     countedInBending(topo, geo, active, t[1]) ||
+                                     countedInBending(topo, geo, active, t[2])))
+      continue;
     double b = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double c = geo.cornerDot[3 * static_cast<std::size_t>(f) + k] / (2 * geo.faceArea[f]);
-      if (c > kBarrierCot) b += kBarrierWeight * (c - kBarrierCot) * (c - kBarrierCot);
-    }
-    return b;
-  });
-  for (int f = 0; f < topo.faceCount(); ++f) {  // the barrier's share per vertex, for culprit search
-    if (!(geo.faceArea[f] > 0)) continue;
-    double b = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double c = geo.cornerDot[3 * static_cast<std::size_t>(f) + k] / (2 * geo.faceArea[f]);
-      if (c > kBarrierCot) b += kBarrierWeight * (c - kBarrierCot) * (c - kBarrierCot);
-    }
+    for (int k = 0; k < 3; ++k) b += barrier(geo.cornerDot[3 * static_cast<std::size_t>(f) + k] / (2 * geo.faceArea[f]));
+    out.value += b;
     if (b > 0)
-      for (int v : faces[f]) out.term[v] += b / 3;
+      for (int v : t) out.term[v] += b / 3;
   }
   return out.value;
 }

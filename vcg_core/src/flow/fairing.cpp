@@ -253,23 +253,10 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   }
 }
 
-// max over free vertices of κ·ℓ_i (κ = |H| + √max(H² − K, 0), ℓ_i the mean length of the vertex's
-// edges): above kNeckCurvatureTimesEdge the discrete energy no longer sees what bending there
-// costs (as needsRemeshing()).
+// largestCurvatureTimesEdge (mesh_quality_stage.h) of a flow state's free vertices, on its caches.
 double largestCurvatureTimesEdge(FlowState& state) {
-  const Topology& topo = state.topology();
-  const Geometry& geo = state.geometry();
   const Curvature& c = state.curvature();
-  const std::vector<std::uint8_t>& free = state.roles().free;
-  double largest = 0;
-  for (int v = 0; v < topo.vertexCount(); ++v) {
-    if (!free[v] || topo.valence(v) == 0) continue;
-    double ell = 0;
-    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ell += geo.edgeLength[topo.ringEdge(k)];
-    const double kappa = std::abs(c.H[v]) + std::sqrt(std::max(c.H[v] * c.H[v] - c.K[v], 0.0));
-    largest = std::max(largest, kappa * ell / topo.valence(v));
-  }
-  return largest;
+  return largestCurvatureTimesEdge(state.topology(), state.mesh().positions, c.H, c.K, state.roles().free);
 }
 
 // The vector scheme (flow/vector_integrator.h) with adaptive τ (×2 after a step, ×0.5 after a
@@ -380,17 +367,16 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
 
 // Scheme::Automatic: the vector scheme unless the region has handles resolved by fewer than
 // kVectorVerticesPerHandle vertices each (the genus of a closed mesh; a region with a border
-// counts as a disk, as workingResolutionFloor does). Judged on the input, before any subdivision:
+// counts as a disk: closedGenus). Judged on the input, before any subdivision:
 // the subdivisions asked for (FlowOptions::subdivisionLevels) count, four times the vertices each.
 Scheme automaticScheme(const TriMesh& mesh, const std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt) {
-  const int floor = workingResolutionFloor(mesh);  // 100 · (genus + 1)
-  const int handlesPlusOne = floor / 100;
-  if (handlesPlusOne <= 1) return Scheme::Vector;
+  const int genus = closedGenus(mesh);
+  if (genus == 0) return Scheme::Vector;
   const std::vector<std::uint8_t> none;
   long long moving = movingVertexCount(mesh, faceSelected ? *faceSelected : none, opt.boundary);
   for (int l = 0; l < opt.subdivisionLevels; ++l) moving *= 4;
-  return moving >= static_cast<long long>(kVectorVerticesPerHandle) * handlesPlusOne ? Scheme::Vector
-                                                                                     : Scheme::SemiImplicit;
+  return moving >= static_cast<long long>(kVectorVerticesPerHandle) * (genus + 1) ? Scheme::Vector
+                                                                                  : Scheme::SemiImplicit;
 }
 
 }  // namespace

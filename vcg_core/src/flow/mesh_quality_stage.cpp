@@ -37,14 +37,15 @@ std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& ro
 
 }  // namespace
 
-int workingResolutionFloor(const TriMesh& mesh) {
+int closedGenus(const TriMesh& mesh) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
+  if (topo.boundaryEdgeCount() > 0) return 0;
   int used = 0;
   for (int v = 0; v < topo.vertexCount(); ++v) used += !topo.isIsolatedVertex(v);
-  int genus = 0;
-  if (topo.boundaryEdgeCount() == 0) genus = std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
-  return kVerticesPerHandle * (genus + 1);
+  return std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
 }
+
+int workingResolutionFloor(const TriMesh& mesh) { return kVerticesPerHandle * (closedGenus(mesh) + 1); }
 
 void subdivideOneLevel(TriMesh& mesh, std::vector<std::uint8_t>& selection) {
   if (selection.empty())
@@ -80,20 +81,24 @@ double smallestMovingAngle(const TriMesh& mesh, const std::vector<std::uint8_t>&
   return smallestAngleDegrees(mesh, movingFaces(mesh, assignRoles(topo, &selection, mode)));
 }
 
+double largestCurvatureTimesEdge(const Topology& topo, const std::vector<Vec3>& positions, const std::vector<double>& H,
+                                 const std::vector<double>& K, const std::vector<std::uint8_t>& moving) {
+  double largest = 0;
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    if (!moving[v] || topo.valence(v) == 0) continue;
+    double ell = 0;
+    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ell += (positions[topo.ringVertex(k)] - positions[v]).norm();
+    const double kappa = std::abs(H[v]) + std::sqrt(std::max(H[v] * H[v] - K[v], 0.0));
+    largest = std::max(largest, kappa * ell / topo.valence(v));
+  }
+  return largest;
+}
+
 double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& selection,
                                        BoundaryMode mode) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
-  const VertexRoles roles = assignRoles(topo, &selection, mode);
-  const std::vector<double> kappa = largestPrincipalCurvature(mesh);
-  double largest = 0;
-  for (int v = 0; v < topo.vertexCount(); ++v) {
-    if (!roles.free[v] || topo.valence(v) == 0) continue;
-    double ell = 0;
-    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k)
-      ell += (mesh.positions[topo.ringVertex(k)] - mesh.positions[v]).norm();
-    largest = std::max(largest, kappa[v] * ell / topo.valence(v));
-  }
-  return largest;
+  const MeshCurvature c = measureCurvature(mesh);
+  return largestCurvatureTimesEdge(topo, mesh.positions, c.H, c.K, assignRoles(topo, &selection, mode).free);
 }
 
 std::vector<double> largestPrincipalCurvature(const TriMesh& mesh) {

