@@ -21,6 +21,7 @@ namespace {
 struct FairArgs {
   std::string input, output, report, selectedFaces;
   bool ascii = false, color = false, progress = false, selected = false;
+  double featureSize = 0;  // a fraction of the bounding-box diagonal
   FlowOptions flow;
 };
 
@@ -50,6 +51,7 @@ void runFair(FairArgs& a) {
     selection = readFaceIndexFile(a.selectedFaces, inFaces);
   }
 
+  a.flow.featureSize = a.featureSize * boundingBoxDiagonal(input.positions);
   a.flow.progress = terminalProgress("fair", a.progress);
   app::FairingResult result;
   try {
@@ -108,6 +110,10 @@ void addFairCommand(CLI::App& app) {
   cmd->add_option("-o,--output", args->output, "output PLY file")->required();
   addFlowOptions(*cmd, args->flow);
   addWholeMeshFlowOptions(*cmd, args->flow);
+  cmd->add_option("--feature-size", args->featureSize,
+                  "a fairing amount: smooth away bumps smaller than this fraction of the bounding-box diagonal "
+                  "(e.g. 0.03), keep larger shapes, then stop (default 0: fair until converged)")
+      ->check(CLI::Range(0.0, 1.0));
   CLI::Option* selected = cmd->add_flag(
       "--selected", args->selected,
       "fair only the selected faces (PLY face flags, as MeshLab saves its selection, or a face property 'selected'); "

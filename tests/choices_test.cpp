@@ -31,7 +31,8 @@ TEST(Choices, EveryEnumeratorHasOneNamedEntry) {
   expectComplete({VertexArea::Mixed, VertexArea::Barycentric});
   expectComplete({FillStage::Triangulation, FillStage::Refinement, FillStage::Biharmonic, FillStage::Flow});
   expectComplete({StopReason::Converged, StopReason::Stalled, StopReason::MaxSteps, StopReason::MaxSeconds,
-                  StopReason::Cancelled, StopReason::Diverged, StopReason::Shrunk, StopReason::SelfContact});
+                  StopReason::Cancelled, StopReason::Diverged, StopReason::Shrunk, StopReason::SelfContact,
+                  StopReason::FeatureSize});
 }
 
 // .mlx scripts store a RichEnum as its index: the menus' order is fixed forever.

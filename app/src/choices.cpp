@@ -59,7 +59,8 @@ const std::vector<Choice<StopReason>>& choices<StopReason>() {
       {StopReason::Cancelled, "cancelled", "cancelled"},
       {StopReason::Diverged, "diverged", "diverged"},
       {StopReason::Shrunk, "shrunk", "stopped: the flow shrinks the surface (the comparison flows do)"},
-      {StopReason::SelfContact, "self_contact", "stopped: going on would make the surface cross itself"}};
+      {StopReason::SelfContact, "self_contact", "stopped: going on would make the surface cross itself"},
+      {StopReason::FeatureSize, "feature_size", "faired to the feature size"}};
   return t;
 }
 

@@ -75,6 +75,8 @@ enum class StopReason {
   /// (a knotted tube swelling into itself): every step the embedding guard allowed had shrunk to
   /// 1e-4 of the stage's largest. The mesh is the last state, which does not cross itself.
   SelfContact,
+  /// FlowOptions::featureSize: the flow ran for the time that damps ripples of that size.
+  FeatureSize,
 };
 
 /// Progress of a run, given to FlowOptions::progress.
@@ -142,6 +144,18 @@ struct FlowOptions {
   int subdivisionLevels = 0;
   /// Stop subdividing once the mean edge length is at or below this (0: no target).
   double targetEdgeLength = 0;
+
+  /// A fairing amount (a length, in the mesh's units; 0: off, flow until converged). The flow runs
+  /// for the time t = 2 (featureSize / 2π)⁴ and stops with StopReason::FeatureSize: on a nearly
+  /// flat piece the flow is u_t = −½ Δ²u, which damps a ripple of wavelength λ like
+  /// exp(−½ (2π/λ)⁴ t), so ripples of featureSize lose 1/e of their height, ripples of a third of
+  /// it vanish (e⁻⁸¹), and shapes five times larger keep all but 1/600 of theirs. A sphere does
+  /// not move at any t. Steps are at most t/4 (an implicit step damps a mode by 1/(1 + ½k⁴τ), not
+  /// by the exact exponential; four steps come within 10 % of it at featureSize) and are not
+  /// extrapolated. The remeshing before the first stage (FlowOptions::remesh) is skipped: it would
+  /// smooth below its edge length whatever the amount. Elastica and Laplacian-of-H flows (the
+  /// bilaplacian's time has no length unit).
+  double featureSize = 0;
 
   long long maxSteps = 2'000'000;  ///< over all stages
   double maxSeconds = 0;           ///< wall-time limit; 0 means none

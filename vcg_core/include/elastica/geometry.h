@@ -66,4 +66,8 @@ Geometry computeGeometry(const Topology& topo, const std::vector<Vec3>& p,
 /// Mean edge length of a mesh (0 for a mesh without edges).
 double meanEdgeLength(const Topology& topo, const std::vector<Vec3>& p);
 
+/// The diagonal of the axis-aligned box around `p` (every point, as MeshLab's bbox): the length
+/// that sizes given as a fraction (FlowOptions::featureSize at the faces) are fractions of.
+double boundingBoxDiagonal(const std::vector<Vec3>& p);
+
 }  // namespace elastica

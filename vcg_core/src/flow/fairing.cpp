@@ -47,6 +47,8 @@ constexpr double kShapeScaleFactor = 50;
 // lengths (ten times more before a refinement). A round sphere of 4,000 vertices has about 12
 // edges per radius: 0.01 ℓ is under 0.1 % of it.
 constexpr double kVectorShapeTolerance = 0.01;
+// FlowOptions::featureSize: its flow time in at least this many steps.
+constexpr double kFeatureSteps = 4;
 
 void validate(const FlowOptions& o) {
   auto bad = [](const std::string& what) { throw InvalidInputError("fair: " + what); };
@@ -63,6 +65,9 @@ void validate(const FlowOptions& o) {
   if (o.flipInterval < 1) bad("flipInterval must be >= 1");
   if (!(o.maxJump > 0)) bad("maxJump must be > 0");
   if (o.driftPasses < 0) bad("driftPasses must be >= 0");
+  if (!(o.featureSize >= 0) || !std::isfinite(o.featureSize)) bad("featureSize must be >= 0");
+  if (o.featureSize > 0 && o.flow == FlowType::Bilaplacian)
+    bad("featureSize needs the elastica or Laplacian-of-H flow (the bilaplacian's time has no length unit)");
   if (o.scheme == Scheme::SemiImplicit && o.flow == FlowType::Bilaplacian)
     bad("the bilaplacian flow has the explicit scheme only");
 }
@@ -79,15 +84,25 @@ struct Run {
   FlowReport& report;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   double time = 0;  // flow time
+  // FlowOptions::featureSize's flow time 2 (featureSize / 2π)⁴, or none.
+  const double timeLimit = opt.featureSize > 0 ? 2 * std::pow(opt.featureSize / (2 * M_PI), 4)
+                                               : std::numeric_limits<double>::infinity();
   bool stopped = false;
 
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
-  // Step and time limits; true if the run must stop.
+  // Step, wall-time and flow-time limits; true if the run must stop.
   bool limitReached() {
-    if (report.steps >= opt.maxSteps) report.stop = StopReason::MaxSteps;
+    if (time >= timeLimit * (1 - 1e-9)) report.stop = StopReason::FeatureSize;
+    else if (report.steps >= opt.maxSteps) report.stop = StopReason::MaxSteps;
     else if (opt.maxSeconds > 0 && elapsed() >= opt.maxSeconds) report.stop = StopReason::MaxSeconds;
     else return false;
     return stopped = true;
+  }
+  bool timeLimited() const { return std::isfinite(timeLimit); }
+  // The step an adaptive scheme may try under FlowOptions::featureSize: a quarter of the flow time
+  // at most, and no more than what remains of it.
+  double capped(double tau) const {
+    return timeLimited() ? std::min({tau, timeLimit / kFeatureSteps, timeLimit - time}) : tau;
   }
   // Records a checked state (λ, energy history) and reports progress; true if the caller cancelled.
   bool record(FlowState& state, int level, double energy) {
@@ -218,6 +233,7 @@ void semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   std::deque<std::pair<double, double>> window{{lowered, run.time}};  // (lowered so far, flow time)
   while (!run.limitReached()) {
     ++report.steps;  // attempts count against maxSteps
+    tau = run.capped(tau);
     if (!integrator.tryStep(state, tau)) {
       ++report.rejectedSteps;
       ceiling = tau;
@@ -296,8 +312,11 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
   const double neckLimit = std::max(kNeckCurvatureTimesEdge, kNeckGrowth * largestCurvatureTimesEdge(state));
   bestEnergy = state.energy();
   best = state.mesh();
+  // Under a flow-time budget each step is the time it stands for: no extrapolation.
+  integrator.allowExtrapolation(!run.timeLimited());
   while (!run.limitReached()) {
     ++report.steps;
+    tau = run.capped(tau);
     if (!integrator.tryStep(state, tau)) {
       ++report.rejectedSteps;
       crossingsInARow = integrator.lastRejectionCrossed() ? crossingsInARow + 1 : 0;
@@ -418,7 +437,9 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   int reflows = 0;
   TriMesh best;  // the vector scheme's lowest-energy state of the current stage
   double bestEnergy = 0;
-  if (quality && remeshMovingRegion(mesh, selection, opt.boundary, false)) ++report.remeshings;
+  // A fairing amount (FlowOptions::featureSize) keeps the user's vertices: an isotropic remeshing
+  // first would resample the surface and smooth it below its edge length, whatever the amount.
+  if (quality && !run.timeLimited() && remeshMovingRegion(mesh, selection, opt.boundary, false)) ++report.remeshings;
   for (;; ++level) {
     if (adaptive && remeshMovingRegion(mesh, selection, opt.boundary, true)) ++report.remeshings;
     adaptive = false;
@@ -448,8 +469,11 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
         bool neckFormed = false;
         meshBound = !vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
                                  quality && !report.inputSelfIntersects, lastTau, best, bestEnergy, neckFormed);
-        // The stage's output is its lowest-energy state before any neck formed.
-        if (neckFormed || bestEnergy < state.energy()) state = FlowState(best, selection, stageOpt, slider.get());
+        // The stage's output is its lowest-energy state before any neck formed; under a flow-time
+        // budget (FlowOptions::featureSize), the state at that time: the flow's answer to the amount
+        // asked for, whose E may be above the input's where W's tangential part evened the mesh out.
+        if (neckFormed || (!run.timeLimited() && bestEnergy < state.energy()))
+          state = FlowState(best, selection, stageOpt, slider.get());
       } else {
         const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
         semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, plateau,

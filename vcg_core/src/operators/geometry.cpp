@@ -28,6 +28,13 @@ double meanEdgeLength(const Topology& topo, const std::vector<Vec3>& p) {
   return sum / ne;
 }
 
+double boundingBoxDiagonal(const std::vector<Vec3>& p) {
+  if (p.empty()) return 0;
+  Vec3 lo = p.front(), hi = p.front();
+  for (const Vec3& x : p) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  return (hi - lo).norm();
+}
+
 namespace {
 
 // Σ of the angles arg(d_c + i·s_c) ∈ [0, π] of the corners [begin, end) of one vertex with one

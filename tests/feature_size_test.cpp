@@ -1,0 +1,121 @@
+// FlowOptions::featureSize, the fairing amount: the flow runs for t = 2 (size / 2π)⁴ and stops
+// with StopReason::FeatureSize. Checked on a sphere carrying small bumps (1 % of the bounding-box
+// diagonal across) and one broad feature (20 % across): the amount 3 % removes the bumps and
+// leaves the broad feature where it was.
+#include <elastica/fairing.h>
+#include <elastica/mesh_curvature.h>
+#include <elastica/shapes.h>
+#include <elastica/subdivision.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace elastica;
+
+namespace {
+
+// Radial bump of height h and footprint radius w (a cos² profile) at unit direction c, as a
+// function of the point's unit direction u (chord distance).
+double bump(const Vec3& u, const Vec3& c, double w, double h) {
+  const double d = (u - c).norm();
+  if (d >= w) return 0;
+  const double s = std::cos(0.5 * M_PI * d / w);
+  return h * s * s;
+}
+
+struct BumpySphere {
+  TriMesh mesh;
+  std::vector<Vec3> bumpCentres;
+  Vec3 featureCentre;
+  double w = 0, featureW = 0;
+};
+
+// A unit sphere (level-5 icosphere, ℓ ≈ 0.038) refined twice around its north pole (ℓ ≈ 0.0094,
+// so a bump 1 % of the diagonal across spans ~4 edges), with seven bumps there and one broad
+// feature on the south side. Bounding-box diagonal ≈ 2√3.
+BumpySphere bumpySphere() {
+  BumpySphere b;
+  b.mesh = shapes::icosphere(1, 5);
+  const double diagonal = 2 * std::sqrt(3.0);
+  b.w = 0.005 * diagonal;        // footprint radius: 1 % of the diagonal across
+  b.featureW = 0.1 * diagonal;   // 20 % across
+  const Vec3 pole(0, 0, 1);
+  for (int level = 0; level < 2; ++level) {
+    std::vector<std::uint8_t> cap(b.mesh.faces.size(), 0);
+    for (std::size_t f = 0; f < cap.size(); ++f)
+      cap[f] = (b.mesh.positions[b.mesh.faces[f][0]].normalized() - pole).norm() < 0.3;
+    subdivideMidpointRegion(b.mesh, cap);
+  }
+  for (Vec3& p : b.mesh.positions) p.normalize();
+  b.bumpCentres.push_back(pole);
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * M_PI / 3;
+    b.bumpCentres.push_back(Vec3(0.09 * std::cos(a), 0.09 * std::sin(a), 1).normalized());
+  }
+  b.featureCentre = Vec3(1, 0, -1).normalized();
+  for (Vec3& p : b.mesh.positions) {
+    const Vec3 u = p;
+    double r = 1 + bump(u, b.featureCentre, b.featureW, 0.15);
+    for (const Vec3& c : b.bumpCentres) r += bump(u, c, b.w, 0.5 * b.w);
+    p = r * u;
+  }
+  return b;
+}
+
+// RMS of H − 1 (a unit sphere's H) over the vertices within `radius` of the pole.
+double capCurvatureSpread(const TriMesh& m, double radius) {
+  const MeshCurvature c = measureCurvature(m);
+  double sum = 0;
+  int n = 0;
+  for (int v = 0; v < m.vertexCount(); ++v) {
+    if ((m.positions[v].normalized() - Vec3(0, 0, 1)).norm() >= radius) continue;
+    sum += (c.H[v] - 1) * (c.H[v] - 1);
+    ++n;
+  }
+  return std::sqrt(sum / n);
+}
+
+}  // namespace
+
+TEST(FeatureSize, RemovesSmallerBumpsAndKeepsLargerShapes) {
+  const BumpySphere b = bumpySphere();
+  const double diagonal = boundingBoxDiagonal(b.mesh.positions);
+  TriMesh m = b.mesh;
+  FlowOptions o;
+  o.featureSize = 0.03 * diagonal;
+  const FlowReport r = fair(m, o);
+  EXPECT_EQ(r.stop, StopReason::FeatureSize);
+  ASSERT_EQ(m.vertexCount(), b.mesh.vertexCount());  // no remeshing: vertices correspond
+
+  const double before = capCurvatureSpread(b.mesh, 0.2), after = capCurvatureSpread(m, 0.2);
+  EXPECT_LE(after, before / 10) << "H spread over the bumps " << before << " -> " << after;
+
+  double moved = 0;
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if ((b.mesh.positions[v].normalized() - b.featureCentre).norm() < b.featureW)
+      moved = std::max(moved, (m.positions[v] - b.mesh.positions[v]).norm());
+  EXPECT_LE(moved, 0.01 * diagonal) << "the broad feature moved by " << moved / diagonal << " of the diagonal";
+}
+
+// The amount is a flow time: zero amount, no limit; the flow time reached is the one asked for.
+TEST(FeatureSize, RunsForTheFlowTimeOfTheSize) {
+  TriMesh m = bumpySphere().mesh;
+  FlowOptions o;
+  o.featureSize = 0.1;
+  const FlowReport r = fair(m, o);
+  ASSERT_EQ(r.stop, StopReason::FeatureSize);
+  const double t = 2 * std::pow(0.1 / (2 * M_PI), 4);
+  EXPECT_NEAR(r.history.back().time, t, 1e-6 * t);
+}
+
+TEST(FeatureSize, RejectsANegativeSizeAndTheBilaplacian) {
+  TriMesh m = shapes::icosphere(1, 2);
+  FlowOptions o;
+  o.featureSize = -1;
+  EXPECT_THROW(fair(m, o), InvalidInputError);
+  o.featureSize = 0.1;
+  o.flow = FlowType::Bilaplacian;
+  EXPECT_THROW(fair(m, o), InvalidInputError);
+}
