@@ -43,7 +43,7 @@ bool parseValue(ea::ParamType type, const std::string& text, double& out) {
   if (text.empty()) return false;
   char* end = nullptr;
   errno = 0;
-  if (type == ea::ParamType::Float) {
+  if (type == ea::ParamType::Float || type == ea::ParamType::AbsPerc) {
     const float f = std::strtof(text.c_str(), &end);
     out = f;
     return *end == '\0' && errno == 0 && std::isfinite(f);

@@ -22,6 +22,7 @@ ea::ParamValues readParameters(const ea::FilterSpec& spec, const RichParameterLi
       case ea::ParamType::Int: v.set(p.name, params.getInt(name)); break;
       case ea::ParamType::Float: v.set(p.name, params.getFloat(name)); break;
       case ea::ParamType::Enum: v.set(p.name, params.getEnum(name)); break;
+      case ea::ParamType::AbsPerc: v.set(p.name, params.getAbsPerc(name)); break;
     }
   }
   return v;
@@ -68,7 +69,8 @@ int declaredChanges(ea::FilterId id) {
 }
 
 void addParameters(ea::FilterId id, const CMeshO& m, RichParameterList& params) {
-  const ea::FilterSpec spec = ea::filterSpec(id, ea::meshFacts(m));
+  const ea::MeshFacts facts = ea::meshFacts(m);
+  const ea::FilterSpec spec = ea::filterSpec(id, facts);
   for (const ea::ParamSpec& p : spec.params) {
     const QString name = qs(p.name), label = qs(p.label), tip = qs(p.tooltip);
     switch (p.type) {
@@ -81,6 +83,9 @@ void addParameters(ea::FilterId id, const CMeshO& m, RichParameterList& params) 
         params.addParam(RichEnum(name, int(p.defaultValue), values, label, tip));
         break;
       }
+      case ea::ParamType::AbsPerc:  // the length; the dialog shows it as a % of the diagonal too
+        params.addParam(RichAbsPerc(name, float(p.defaultValue), 0.f, float(facts.diagonal), label, tip));
+        break;
     }
   }
 }

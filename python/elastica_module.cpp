@@ -185,8 +185,9 @@ auto withoutGil(PythonProgress& progress, Job job) {
 
 py::tuple fairArrays(const py::object& V, const py::object& F, const py::object& selectedFaces,
                      const std::string& flow, const std::optional<std::string>& scheme, int subdivide,
-                     long long maxSteps, double maxSeconds, std::optional<double> energyTol, bool tangential,
-                     const std::string& boundary, bool remesh, bool flipEdges, const py::object& progress) {
+                     long long maxSteps, double maxSeconds, double featureSize, std::optional<double> energyTol,
+                     bool tangential, const std::string& boundary, bool remesh, bool flipEdges,
+                     const py::object& progress) {
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   std::vector<std::uint8_t> selection = selectionFrom(selectedFaces, mesh.faceCount());
@@ -196,6 +197,9 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   opt.subdivisionLevels = subdivide;
   opt.maxSteps = maxSteps;
   opt.maxSeconds = maxSeconds;
+  if (!(featureSize >= 0 && featureSize <= 1))
+    throw InvalidInputError("feature_size must be in 0..1 (a fraction of the bounding-box diagonal)");
+  opt.featureSize = featureSize * boundingBoxDiagonal(mesh.positions);
   if (energyTol) opt.energyTolerance = *energyTol;
   opt.tangentialDrift = tangential;
   opt.boundary = choice<BoundaryMode>("boundary", boundary);
@@ -272,6 +276,7 @@ std::string keywordOf(const std::string& parameter) {
   static const std::map<std::string, std::string> keywords = {
       {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"},
       {"subdivisionLevels", "subdivide"}, {"energyTolerance", "energy_tol"}, {"tangentialDrift", "tangential"},
+      {"featureSize", "feature_size"},
       {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"lambdaFix", "lambda_fix"},
       {"area", "area"}};
   const auto it = keywords.find(parameter);
@@ -297,7 +302,11 @@ py::dict filterSpecs() {
   static const std::map<app::FilterId, const char*> function = {
       {app::FilterId::Fairing, "fair"}, {app::FilterId::FillHoles, "fill_holes"}, {app::FilterId::Curvature, "curvature"}};
   py::dict all;
-  for (const app::FilterSpec& f : app::allFilters({})) {
+  // A diagonal of 1 makes a RichAbsPerc's default its fraction of the diagonal, which is what
+  // Python takes (feature_size=0.03).
+  app::MeshFacts unitDiagonal;
+  unitDiagonal.diagonal = 1;
+  for (const app::FilterSpec& f : app::allFilters(unitDiagonal)) {
     py::list params;
     for (const app::ParamSpec& p : f.params) {
       py::dict d;
@@ -306,6 +315,7 @@ py::dict filterSpecs() {
       d["keyword"] = keyword.empty() ? py::object(py::none()) : py::object(py::str(keyword));
       d["label"] = p.label;
       d["description"] = p.tooltip;
+      d["rich_type"] = app::richTypeName(p.type);  // the .mlx type
       switch (p.type) {
         case app::ParamType::Bool:
           d["type"] = "bool";
@@ -318,6 +328,11 @@ py::dict filterSpecs() {
         case app::ParamType::Float:
           d["type"] = "float";
           d["default"] = p.defaultValue;
+          break;
+        case app::ParamType::AbsPerc:  // a fraction of the bounding-box diagonal here
+          d["type"] = "float";
+          d["default"] = p.defaultValue;
+          d["description"] = p.tooltip + " A fraction of the bounding-box diagonal.";
           break;
         case app::ParamType::Enum: {
           d["type"] = "enum";
@@ -332,6 +347,10 @@ py::dict filterSpecs() {
       if (p.type == app::ParamType::Int || p.type == app::ParamType::Float) {
         d["min"] = bound(p.minValue);
         d["max"] = bound(p.maxValue);
+      }
+      if (p.type == app::ParamType::AbsPerc) {
+        d["min"] = 0.0;
+        d["max"] = 1.0;
       }
       params.append(d);
     }
@@ -387,19 +406,21 @@ PYBIND11_MODULE(elastica, m) {
   const HoleFillOptions fillDefaults;
   m.def("fair", &fairArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(), py::kw_only(),
         py::arg("flow") = app::nameOf(flowDefaults.flow), py::arg("scheme") = py::none(), py::arg("subdivide") = 0,
-        py::arg("max_steps") = flowDefaults.maxSteps, py::arg("max_seconds") = 0.0,
+        py::arg("max_steps") = flowDefaults.maxSteps, py::arg("max_seconds") = 0.0, py::arg("feature_size") = 0.0,
         py::arg("energy_tol") = py::none(), py::arg("tangential") = true,
         py::arg("boundary") = app::nameOf(flowDefaults.boundary), py::arg("remesh") = flowDefaults.remesh,
         py::arg("flip_edges") = flowDefaults.flipEdges, py::arg("progress") = py::none(),
         (std::string("fair(V, F, selected_faces=None, *, flow='elastica', scheme=None, subdivide=0, max_steps=") +
          std::to_string(flowDefaults.maxSteps) +
-         ", max_seconds=0, energy_tol=None, tangential=True, boundary='fixed',\n"
-         "     remesh=True, flip_edges=False, progress=None) -> (V_out, F_out, report)\n\n"
+         ", max_seconds=0, feature_size=0, energy_tol=None, tangential=True,\n     boundary='fixed',"
+         " remesh=True, flip_edges=False, progress=None) -> (V_out, F_out, report)\n\n"
          "Fairs the mesh with a curvature flow, as `elastica fair`: flow 'elastica' (F = -Lap H - 2H(H^2-K)),\n"
          "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto' (None: the core's default, '" +
          app::nameOf(flowDefaults.scheme) +
          "');\n"
-         "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_seconds 0: no limit; energy_tol None: the\n"
+         "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_seconds 0: no limit; feature_size: a fairing\n"
+         "amount, a fraction of the bounding-box diagonal (bumps smaller than it are smoothed away, larger shapes\n"
+         "kept; report['stop'] 'feature_size'), 0: fair until converged; energy_tol None: the\n"
          "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
          "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
          "guard), so F_out may differ from F; False keeps the connectivity (`--no-remesh`). flip_edges: flip\n"

@@ -296,6 +296,28 @@ TEST(Cli, MaxSecondsEndsARunThatWouldNotStop) {
   EXPECT_LT(seconds, 5.0);
 }
 
+// --feature-size F: a fraction of the bounding-box diagonal, handed to the core as that length; the
+// run stops with its own reason. Out of 0..1 it is refused.
+TEST(Cli, FeatureSizeIsAFractionOfTheDiagonal) {
+  ScratchDir dir("cli-feature-size");
+  ASSERT_EQ(runElastica("generate icosphere --level 3 --noise 0.05 -o " + dir.file("n.ply")).exitCode, 0);
+  const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
+                                        " --feature-size 0.05 --report " + dir.file("r.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("(feature_size)"), std::string::npos) << run.output;
+  VcgMesh vm;
+  io::readMesh(dir.file("n.ply"), vm);
+  const double diagonal = boundingBoxDiagonal(toTriMesh(vm).positions);
+  std::ifstream in(dir.file("r.json"));
+  const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(json, m, std::regex("\"feature_size\": ([0-9.e+-]+)"))) << json;
+  EXPECT_NEAR(std::stod(m[1]), 0.05 * diagonal, 1e-9 * diagonal);
+  EXPECT_NE(json.find("\"stop\": \"feature_size\""), std::string::npos);
+  EXPECT_NE(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --feature-size 2").exitCode, 0);
+  EXPECT_FALSE(std::filesystem::exists(dir.file("g.ply")));
+}
+
 TEST(Cli, HelpForProgramAndSubcommands) {
   CommandResult run = runElastica("--help");
   EXPECT_EQ(run.exitCode, 0);

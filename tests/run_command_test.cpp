@@ -71,7 +71,7 @@ TEST_F(RunCommand, MissingParametersWarnAndTakeDefaults) {
   const CommandResult r = runElastica("run -i " + input + " -o " + output + " -s " + kScripts +
                                       "/fairing_missing_parameters.mlx");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  for (const char* name : {"flow", "scheme", "maxSeconds", "subdivisionLevels", "energyTolerance", "tangentialDrift", "boundary",
+  for (const char* name : {"flow", "scheme", "maxSeconds", "featureSize", "subdivisionLevels", "energyTolerance", "tangentialDrift", "boundary",
                            "Selected", "colorByMeanCurvature"})
     EXPECT_NE(r.output.find("does not set '" + std::string(name) + "'; using its default"), std::string::npos) << name;
   EXPECT_EQ(r.output.find("does not set 'maxSteps'"), std::string::npos) << r.output;

@@ -45,7 +45,7 @@ Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices) {
 // The value of number parameter `name`, checked against the range its spec declares.
 double checkedNumber(const ParamValues& v, const FilterSpec& spec, const std::string& name) {
   const ParamSpec& p = *spec.param(name);
-  const double x = p.type == ParamType::Int ? double(v.getInt(name)) : v.getFloat(name);
+  const double x = p.type == ParamType::Int ? double(v.getInt(name)) : v.getFloat(name);  // Float, AbsPerc
   if (x >= p.minValue && x <= p.maxValue) return x;
   std::string range = p.maxValue < std::numeric_limits<double>::infinity()
                           ? "in " + number(p.minValue) + ".." + number(p.maxValue)
@@ -144,6 +144,7 @@ FlowOptions fairingOptions(const ParamValues& v) {
   o.subdivisionLevels = static_cast<int>(checkedNumber(v, spec, "subdivisionLevels"));
   o.energyTolerance = checkedNumber(v, spec, "energyTolerance");
   o.tangentialDrift = v.getBool("tangentialDrift");
+  if (v.has("featureSize")) o.featureSize = checkedNumber(v, spec, "featureSize");  // a length
   return o;
 }
 

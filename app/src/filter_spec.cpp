@@ -40,6 +40,11 @@ constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 // The time limit's default: the default scheme converges on the 1,839-vertex bunny in
 // seconds; a run that needs a minute is better stopped and reported than left to freeze MeshLab.
 constexpr float kDefaultMaxSeconds = 60;
+ParamSpec absPercParam(std::string name, double fraction, double diagonal, std::string label, std::string tooltip) {
+  ParamSpec p = param(std::move(name), ParamType::AbsPerc, fraction * diagonal, std::move(label), std::move(tooltip));
+  p.minValue = 0;
+  return p;
+}
 ParamSpec enumParam(std::string name, int value, std::vector<std::string> values, std::string label,
                     std::string tooltip) {
   ParamSpec p = param(std::move(name), ParamType::Enum, double(value), std::move(label), std::move(tooltip));
@@ -51,13 +56,12 @@ ParamSpec enumParam(std::string name, int value, std::vector<std::string> values
 // value: append only).
 ParamSpec flowParam() {
   return enumParam("flow", 0, labels<FlowType>(), "Flow",
-                   "Elastica: toward round (Willmore) surfaces. Laplacian of mean curvature: keeps the volume. "
-                   "Bilaplacian: the paper's comparison (shrinks).");
+                   "Elastica: round (Willmore) surfaces. Laplacian of H: keeps the volume. Bilaplacian: shrinks.");
 }
 ParamSpec schemeParam(Scheme defaultScheme) {
   return enumParam("scheme", indexOf(defaultScheme), labels<Scheme>(), "Time integration",
-                   "Automatic: Vector, or Semi-implicit on coarse meshes with handles. Vector: steps implicit in "
-                   "the positions. Semi-implicit: along the normals. Explicit: the paper's, tiny steps.");
+                   "Automatic: Vector, or Semi-implicit on coarse meshes with handles. Explicit: the paper's tiny "
+                   "steps.");
 }
 ParamSpec maxStepsParam() {
   return intParam("maxSteps", int(FlowOptions{}.maxSteps), "Maximum steps",
@@ -79,23 +83,21 @@ FilterSpec fairing(const MeshFacts& mesh) {
   s.name = "Discrete Elastica Fairing";
   s.info = std::string(
                "Fairs the mesh with the discrete elastica flow, the gradient descent of the total curvature "
-               "&int;(k<sub>1</sub><sup>2</sup> + k<sub>2</sub><sup>2</sup>) dA: every vertex moves along its "
-               "normal with speed F = -&Delta;<sub>B</sub>H - 2H(H<sup>2</sup> - K) (cotangent Laplace-Beltrami "
-               "operator, angle-deficit Gaussian curvature), while a tangential drift keeps the triangles "
-               "even.") +
+               "&int;(k<sub>1</sub><sup>2</sup> + k<sub>2</sub><sup>2</sup>) dA (normal speed "
+               "F = -&Delta;<sub>B</sub>H - 2H(H<sup>2</sup> - K)), toward round, fair surfaces.") +
            kReference;
   s.params = {
       flowParam(),
       schemeParam(FlowOptions{}.scheme),
       maxStepsParam(),
       maxSecondsParam(),
+      absPercParam("featureSize", 0, mesh.diagonal, "Feature size",
+                   "Smooth away bumps smaller than this, keep larger shapes. 0: fair until converged."),
       intParam("subdivisionLevels", 0, "Subdivision levels",
-               "Coarse to fine: 1-to-4 splits, each when the flow is near steady state; with 'Affect only "
-               "selected faces', of the selection only.",
+               "Coarse to fine: 1-to-4 splits, each near steady state (of the selection, if selected).",
                0, 8),
       floatParam("energyTolerance", float(FlowOptions{}.energyTolerance), "Energy tolerance",
-                 "Stop when the energy's relative change per unit of normalised time is below this (smaller: "
-                 "rounder, slower).",
+                 "Stop when the energy's relative change per unit of normalised time is below this.",
                  0),
       boolParam("tangentialDrift", true, "Tangential drift",
                 "Move vertices tangentially to keep the triangles even (paper eq. 2.5)."),
@@ -163,6 +165,7 @@ const char* richTypeName(ParamType t) {
     case ParamType::Int: return "RichInt";
     case ParamType::Float: return "RichFloat";
     case ParamType::Enum: return "RichEnum";
+    case ParamType::AbsPerc: return "RichAbsPerc";
   }
   return "?";
 }

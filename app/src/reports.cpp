@@ -53,6 +53,7 @@ nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int in
   nlohmann::json j = toJson(r);
   j["input"] = {{"vertices", inputVertices}, {"faces", inputFaces}};
   j["flow"] = nameOf(opt.flow);
+  if (opt.featureSize > 0) j["feature_size"] = opt.featureSize;  // the length (the CLI's fraction × diagonal)
   if (result) {
     j["output"] = {{"vertices", result->mesh.vertexCount()}, {"faces", result->mesh.faceCount()}};
     if (result->outputCurvature) j["energy_output"] = result->curvature.energy;

@@ -260,8 +260,8 @@ def test_example_scripts_list_every_parameter_at_its_default():
                     assert got.get("type") == "RichBool" and got.get("value") == str(p["default"]).lower(), where
                 elif p["type"] == "int":
                     assert got.get("type") == "RichInt" and int(got.get("value")) == p["default"], where
-                elif p["type"] == "float":
-                    assert got.get("type") == "RichFloat" and float(got.get("value")) == pytest.approx(p["default"]), where
+                elif p["type"] == "float":  # RichFloat, or RichAbsPerc (a length; its default 0 at any diagonal)
+                    assert got.get("type") == p["rich_type"] and float(got.get("value")) == pytest.approx(p["default"]), where
                 else:
                     assert got.get("type") == "RichEnum", where
                     assert int(got.get("value")) == p["choices"].index(p["default"]), where
@@ -311,3 +311,18 @@ def test_remesh_and_flip_edges_are_the_cli_flags(noisy, tmp_path):
         assert same(V2, Vc) and (F2 == Fc).all()
     V2, F2, r = elastica.fair(V, F, remesh=False)
     assert (F2 == F).all() and r["mesh_quality"]["remeshings"] == 0
+
+
+def test_feature_size_is_a_fraction_of_the_diagonal(noisy):
+    """feature_size=F: the flow time of F x the bounding-box diagonal, then report['stop'] says so;
+    the redo panel and filters() show it as a fraction (0..1)."""
+    V, F = elastica.read(noisy)
+    _, _, report = elastica.fair(V, F, feature_size=0.05)
+    assert report["stop"] == "feature_size"
+    diagonal = float(np.linalg.norm(V.max(axis=0) - V.min(axis=0)))
+    assert report["feature_size"] == pytest.approx(0.05 * diagonal, rel=1e-9)
+    spec = {p["name"]: p for p in elastica.filters()["fair"]["parameters"]}["featureSize"]
+    assert spec["keyword"] == "feature_size" and spec["rich_type"] == "RichAbsPerc"
+    assert (spec["min"], spec["max"], spec["default"]) == (0.0, 1.0, 0.0)
+    with pytest.raises(elastica.InvalidInputError, match="feature_size"):
+        elastica.fair(V, F, feature_size=1.5)

@@ -12,12 +12,16 @@
 
 namespace elastica::app {
 
-/// The facts the defaults depend on (selected live faces).
+/// The facts the defaults depend on (selected live faces, the live vertices' bounding box).
 template <class VcgMeshT>
 MeshFacts meshFacts(const VcgMeshT& m) {
   MeshFacts facts;
   for (const auto& f : m.face)
     if (!f.IsD() && f.IsS()) ++facts.selectedFaces;
+  vcg::Box3<typename VcgMeshT::ScalarType> box;
+  for (const auto& v : m.vert)
+    if (!v.IsD()) box.Add(v.cP());
+  facts.diagonal = box.IsNull() ? 0.0 : double(box.Diag());
   return facts;
 }
 

@@ -20,9 +20,12 @@ namespace elastica::app {
 enum class FilterId { Fairing = 0, FillHoles = 1, Curvature = 2 };
 
 /// The parameter kinds used, as MeshLab names them in .mlx files (RichBool, RichInt, ...).
-enum class ParamType { Bool, Int, Float, Enum };
+/// AbsPerc is a length that MeshLab's dialog also shows as a percentage of the bounding-box
+/// diagonal: its value (dialog, .mlx, ParamSpec::defaultValue for MeshFacts::diagonal) is the
+/// length. The faces that take fractions of the diagonal (CLI, Python, Blender) multiply by it.
+enum class ParamType { Bool, Int, Float, Enum, AbsPerc };
 
-/// "RichBool", "RichInt", "RichFloat", "RichEnum".
+/// "RichBool", "RichInt", "RichFloat", "RichEnum", "RichAbsPerc".
 const char* richTypeName(ParamType t);
 
 struct ParamSpec {
@@ -55,6 +58,7 @@ struct FilterSpec {
 /// What the defaults depend on: the mesh the filter is about to run on.
 struct MeshFacts {
   int selectedFaces = 0;
+  double diagonal = 0;  ///< of the bounding box (RichAbsPerc's 100 %)
 };
 
 /// Every filter, in menu order, with defaults for `mesh`.
