@@ -26,7 +26,7 @@ struct FillArgs {
 };
 
 void runFill(FillArgs& a) {
-  io::checkOutputPath(a.output, a.input);
+  checkMeshOutput(a.output, a.input);
   if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
   VcgMesh vm;
   loadMesh(a.input, vm);
@@ -57,7 +57,7 @@ void runFill(FillArgs& a) {
   w.vertexColor = a.color;
   w.faceFlags = true;
   w.faceFloatAttributes = {"elastica_new"};
-  io::writePly(a.output, vm, w);
+  writeMeshFile(a.output, vm, w);
 
   int skipped = 0;
   for (std::size_t i = 0; i < report.holes.size(); ++i) {
@@ -113,7 +113,7 @@ void addFillCommand(CLI::App& app) {
       "border that passes twice through one point, as two copies of a vertex, is split there and the\n"
       "copies merged where a patch joins their fans.)");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")
       ->capture_default_str()
       ->check(parameterRange(app::FilterId::FillHoles, "MaxHoleSize"));
@@ -127,7 +127,7 @@ void addFillCommand(CLI::App& app) {
   addFlowOptions(*cmd, args->fill.flow);
   cmd->add_option("--report", args->report, "write a JSON report (one entry per hole)");
   addProgressFlag(*cmd, args->progress);
-  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
   cmd->callback([args] { runFill(*args); });
 }

@@ -259,9 +259,7 @@ py::tuple readFile(const py::object& pathLike) {
 void writeFile(const py::object& pathLike, const py::object& V, const py::object& F, bool ascii) {
   const std::string path = pathOf(pathLike);
   const TriMesh mesh = toMesh(V, F);
-  if (io::formatFromExtension(path) != io::MeshFormat::Ply)
-    throw IoError(path + ": elastica.write writes PLY only (.ply)");
-  io::writePly(path, mesh, {}, !ascii);  // atomic: a failed write leaves no half-written file
+  io::writeMesh(path, mesh, {}, !ascii);  // by extension; atomic: a failed write leaves no half-written file
 }
 
 // ---- the MeshLab filters' parameters, for faces that build dialogs (the Blender add-on) ---------
@@ -429,8 +427,9 @@ PYBIND11_MODULE(elastica, m) {
         "STL corners merged, degenerate and duplicate faces removed, bow-tie vertices split; a malformed file\n"
         "raises elastica.IoError naming what and where.");
   m.def("write", &writeFile, py::arg("path"), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("ascii") = false,
-        "write(path, V, F, *, ascii=False)\n\nWrites a PLY file (binary unless ascii) atomically: on failure the\n"
-        "destination is left as it was.");
+        "write(path, V, F, *, ascii=False)\n\nWrites the format the extension names (.ply, .off, .obj, .stl; PLY and\n"
+        "STL binary unless ascii) atomically: on failure the destination is left as it was; an unknown extension\n"
+        "raises elastica.IoError.");
   m.def("filters", &filterSpecs,
         "filters() -> {'fair': spec, 'fill_holes': spec, 'curvature': spec}\n\n"
         "The MeshLab filters' parameters, for a face that builds a dialog (the Blender add-on): each spec has\n"

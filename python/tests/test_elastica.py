@@ -200,8 +200,17 @@ def test_read_write_round_trip_and_errors(noisy, tmp_path):
     with pytest.raises(OSError):
         elastica.read(bad)
     with pytest.raises(elastica.IoError):
-        elastica.write(tmp_path / "out.obj", V, F)
-    assert not (tmp_path / "out.obj").exists()
+        elastica.write(tmp_path / "out.xyz", V, F)
+    assert not (tmp_path / "out.xyz").exists()
+    elastica.write(tmp_path / "rt.off", V, F)  # by extension; OFF keeps every double
+    V2, F2 = elastica.read(tmp_path / "rt.off")
+    assert (F2 == F).all() and (V2 == V).all()
+    elastica.write(tmp_path / "rt.obj", V, F)  # OBJ is read back by tinyobjloader, in float
+    V2, F2 = elastica.read(tmp_path / "rt.obj")
+    assert (F2 == F).all() and same(V2, V, rel=1e-7)
+    elastica.write(tmp_path / "rt.stl", V, F)  # STL: unshared float32 corners, merged again on reading
+    V2, F2 = elastica.read(tmp_path / "rt.stl")
+    assert len(V2) == len(V) and same(V2[F2], V[F], rel=1e-7)
 
 
 def test_filters_describe_the_meshlab_parameters(tmp_path):
