@@ -117,6 +117,9 @@ void addFillCommand(CLI::App& app) {
   cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")
       ->capture_default_str()
       ->check(parameterRange(app::FilterId::FillHoles, "MaxHoleSize"));
+  cmd->add_flag("--close-rims", args->fill.closeRims,
+                "also close the outer rims of open surfaces (by default a scan's outline stays open: a border that "
+                "turns like an outline and spans a quarter or more of its piece's area; docs/restoration.md)");
   cmd->add_option("--stop-after", args->fill.stopAfter,
                   "triangulation, refinement, biharmonic (CGAL-like fairing) or flow (default)")
       ->transform(CLI::CheckedTransformer(app::nameMap<FillStage>(), CLI::ignore_case));

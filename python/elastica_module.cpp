@@ -211,13 +211,14 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
                         toPython(app::fairingReport(r.report, opt, inV, inF, &r)));
 }
 
-py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges, const std::string& flow,
+py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges, bool closeRims, const std::string& flow,
                      const std::optional<std::string>& scheme, std::optional<long long> maxSteps, double maxSeconds,
                      const py::object& progress) {
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   HoleFillOptions opt;
   opt.maxHoleEdges = maxHoleEdges;
+  opt.closeRims = closeRims;
   opt.flow.flow = choice<FlowType>("flow", flow);
   if (scheme) opt.flow.scheme = choice<Scheme>("scheme", *scheme);
   if (maxSteps) opt.flow.maxSteps = *maxSteps;
@@ -270,7 +271,7 @@ std::string keywordOf(const std::string& parameter) {
   static const std::map<std::string, std::string> keywords = {
       {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"},
       {"subdivisionLevels", "subdivide"}, {"energyTolerance", "energy_tol"}, {"tangentialDrift", "tangential"},
-      {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"lambdaFix", "lambda_fix"},
+      {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"CloseRims", "close_rims"}, {"lambdaFix", "lambda_fix"},
       {"area", "area"}};
   const auto it = keywords.find(parameter);
   return it == keywords.end() ? std::string() : it->second;
@@ -407,12 +408,14 @@ PYBIND11_MODULE(elastica, m) {
          "report: the dict `elastica fair --report` writes (without file names).")
             .c_str());
   m.def("fill_holes", &fillArrays, py::arg("V"), py::arg("F"), py::kw_only(),
-        py::arg("max_hole_edges") = fillDefaults.maxHoleEdges, py::arg("flow") = app::nameOf(fillDefaults.flow.flow),
+        py::arg("max_hole_edges") = fillDefaults.maxHoleEdges, py::arg("close_rims") = fillDefaults.closeRims,
+        py::arg("flow") = app::nameOf(fillDefaults.flow.flow),
         py::arg("scheme") = py::none(), py::arg("max_steps") = py::none(), py::arg("max_seconds") = 0.0,
         py::arg("progress") = py::none(),
-        "fill_holes(V, F, *, max_hole_edges=500, flow='elastica', scheme=None, max_steps=None, max_seconds=0,\n"
-        "           progress=None) -> (V_out, F_out, new_faces, report)\n\n"
-        "Fills every hole with at most max_hole_edges border edges, as `elastica fill`: the input's vertices\n"
+        "fill_holes(V, F, *, max_hole_edges=500, close_rims=False, flow='elastica', scheme=None, max_steps=None,\n"
+        "           max_seconds=0, progress=None) -> (V_out, F_out, new_faces, report)\n\n"
+        "Fills every hole with at most max_hole_edges border edges, as `elastica fill`; an open surface's outer\n"
+        "rim stays open unless close_rims (report['holes'][i]['rim'] tells which loops are rims). The input's vertices\n"
         "and faces come first, unchanged, and new_faces is True on the appended patch faces. scheme None: the\n"
         "fill's default (semi-implicit); max_steps None: the default budget. report: the dict\n"
         "`elastica fill --report` writes (without file names).");

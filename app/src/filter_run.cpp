@@ -195,6 +195,7 @@ HoleFillOptions fillHolesOptions(const ParamValues& v) {
   const FilterSpec spec = filterSpec(FilterId::FillHoles, {});
   HoleFillOptions o;
   o.maxHoleEdges = static_cast<int>(checkedNumber(v, spec, "MaxHoleSize"));
+  o.closeRims = v.getBool("CloseRims");
   readFlowParameters(v, spec, o.flow);
   return o;
 }

@@ -125,6 +125,10 @@ FilterSpec fillHoles() {
       intParam("MaxHoleSize", defaults.maxHoleEdges, "Max size to be closed",
                "Holes with more border edges than this stay open (counted as in MeshLab's Close Holes).",
                3, kUnbounded, "a hole has 3 edges or more"),
+      boolParam("CloseRims", defaults.closeRims, "Close rims too",
+                "Off: the outer rim of an open surface (a scan's outline: a border that turns like an outline and "
+                "spans a quarter or more of its piece's area) stays open and only the holes inside are filled. "
+                "On: rims are closed too."),
       flowParam(),
       schemeParam(defaults.flow.scheme),
       maxStepsParam(),

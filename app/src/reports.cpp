@@ -28,7 +28,7 @@ nlohmann::json toJson(const FlowReport& r) {
 }
 
 nlohmann::json toJson(const HoleReport& h) {
-  nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}};
+  nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}, {"rim", h.rim}};
   if (!h.reason.empty()) j["reason"] = h.reason;
   if (!h.filled) return j;
   j["new_vertices"] = h.newVertices;
@@ -67,6 +67,7 @@ nlohmann::json fillingReport(const FillHolesResult& r, const HoleFillOptions& op
                    {"output", {{"vertices", r.mesh.vertexCount()}, {"faces", r.mesh.faceCount()}}},
                    {"stop_after", nameOf(opt.stopAfter)},
                    {"max_hole_edges", opt.maxHoleEdges},
+                   {"close_rims", opt.closeRims},
                    {"filled", filled},
                    {"skipped", static_cast<int>(report.holes.size()) - filled},
                    {"vertex_copies_merged", report.welds.size()},

@@ -320,3 +320,30 @@ def test_remesh_and_flip_edges_are_the_cli_flags(noisy, tmp_path):
         assert same(V2, Vc) and (F2 == Fc).all()
     V2, F2, r = elastica.fair(V, F, remesh=False)
     assert (F2 == F).all() and r["mesh_quality"]["remeshings"] == 0
+
+
+def test_an_open_sheet_keeps_its_rim_unless_close_rims(tmp_path):
+    # The case: a 20x20 grid with a hole cut in its middle. The hole is filled, the rim stays
+    # open (it came back as a closed pillow before); close_rims and --close-rims close it too.
+    n = 20
+    V = np.array([(x, y, 0.0) for y in range(n + 1) for x in range(n + 1)])
+    F = []
+    for y in range(n):
+        for x in range(n):
+            a, b, c, d = y * (n + 1) + x, y * (n + 1) + x + 1, (y + 1) * (n + 1) + x + 1, (y + 1) * (n + 1) + x
+            for t in ((a, b, c), (a, c, d)):
+                if np.hypot(*(V[list(t)].mean(axis=0)[:2] - n / 2)) > 3:
+                    F.append(t)
+    F = np.array(F)
+    used = np.unique(F)
+    V, F = V[used], np.searchsorted(used, F)
+    _, _, new, report = elastica.fill_holes(V, F)
+    assert report["filled"] == 1 and [h["rim"] for h in report["holes"]].count(True) == 1
+    assert "outer rim" in next(h["reason"] for h in report["holes"] if h["rim"])
+    _, _, new_all, report = elastica.fill_holes(V, F, close_rims=True)
+    assert report["filled"] == 2 and report["close_rims"] and new_all.sum() > new.sum()
+    elastica.write(tmp_path / "sheet.ply", V, F)
+    out = cli("fill", tmp_path / "sheet.ply", "-o", tmp_path / "filled.ply")
+    assert "1 hole filled, 1 skipped" in out, out
+    out = cli("fill", tmp_path / "sheet.ply", "-o", tmp_path / "closed.ply", "--close-rims")
+    assert "2 holes filled, 0 skipped" in out, out

@@ -128,7 +128,7 @@ TEST_F(PluginFilter, HelpTextsReadTheSameAsRichText) {
     EXPECT_TRUE(info.endsWith("Geometric Modeling and Processing 2002, pp. 119-123.")) << info.toStdString();
     ++strings;
   }
-  EXPECT_EQ(strings, 2 * (10 + 6 + 2) + 3);  // fairing, fill and curvature parameters; 3 descriptions
+  EXPECT_EQ(strings, 2 * (10 + 7 + 2) + 3);  // fairing, fill and curvature parameters; 3 descriptions
 }
 
 // The time limit: a parameter of every flow filter (60 s by default); reaching it keeps the mesh
