@@ -269,7 +269,7 @@ void writeFile(const py::object& pathLike, const py::object& V, const py::object
 // selection, colouring, selecting new faces).
 std::string keywordOf(const std::string& parameter) {
   static const std::map<std::string, std::string> keywords = {
-      {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"},
+      {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"}, {"maxSeconds", "max_seconds"},
       {"subdivisionLevels", "subdivide"}, {"energyTolerance", "energy_tol"}, {"tangentialDrift", "tangential"},
       {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"CloseRims", "close_rims"}, {"lambdaFix", "lambda_fix"},
       {"area", "area"}};
