@@ -84,7 +84,9 @@ void runFair(FairArgs& a) {
   std::printf("flow %s, scheme %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(a.flow.flow),
               app::nameOf(report.scheme), report.steps, report.seconds,
               app::nameOf(report.stop), report.stages.size(), report.stages.size() == 1 ? "" : "s");
-  std::printf("energy %.9g -> %.9g\n", report.energyInitial, report.energyFinal);
+  std::printf("energy %.9g -> %.9g\n", result.energyInput, result.energyOutput);
+  for (const std::string& line : result.log)  // the flow's own start, when it differs from the input's
+    if (line.rfind("the flow's energy", 0) == 0) std::printf("%s\n", line.c_str());
   std::printf("wrote %s\n", a.output.c_str());
 
   if (!a.report.empty()) {

@@ -194,7 +194,7 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   opt.flow = choice<FlowType>("flow", flow);
   if (scheme) opt.scheme = choice<Scheme>("scheme", *scheme);
   opt.subdivisionLevels = subdivide;
-  opt.maxSteps = maxSteps;
+  opt.maxSteps = app::stepLimit(maxSteps);
   opt.maxSeconds = maxSeconds;
   if (energyTol) opt.energyTolerance = *energyTol;
   opt.tangentialDrift = tangential;
@@ -221,7 +221,7 @@ py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges,
   opt.closeRims = closeRims;
   opt.flow.flow = choice<FlowType>("flow", flow);
   if (scheme) opt.flow.scheme = choice<Scheme>("scheme", *scheme);
-  if (maxSteps) opt.flow.maxSteps = *maxSteps;
+  if (maxSteps) opt.flow.maxSteps = app::stepLimit(*maxSteps);
   opt.flow.maxSeconds = maxSeconds;
   PythonProgress hook{progress, nullptr};
   opt.flow.progress = hook.hook();
@@ -398,7 +398,7 @@ PYBIND11_MODULE(elastica, m) {
          "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto' (None: the core's default, '" +
          app::nameOf(flowDefaults.scheme) +
          "');\n"
-         "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_seconds 0: no limit; energy_tol None: the\n"
+         "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_steps and max_seconds 0: no limit; energy_tol None: the\n"
          "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
          "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
          "guard), so F_out may differ from F; False keeps the connectivity (`--no-remesh`). flip_edges: flip\n"

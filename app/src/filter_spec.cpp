@@ -60,8 +60,8 @@ ParamSpec schemeParam(Scheme defaultScheme) {
                    "the positions. Semi-implicit: along the normals. Explicit: the paper's, tiny steps.");
 }
 ParamSpec maxStepsParam() {
-  return intParam("maxSteps", int(FlowOptions{}.maxSteps), "Maximum steps",
-                  "Over all stages; the flow normally stops earlier, at the energy plateau.",
+  return intParam("maxSteps", 0, "Maximum steps",
+                  "Over all stages; 0: no limit (the flow stops at its plateau first).",
                   0, kUnbounded);
 }
 // The wall-time limit: MeshLab 2020.09 cannot cancel a running filter (its progress callback
@@ -98,7 +98,7 @@ FilterSpec fairing(const MeshFacts& mesh) {
                  "rounder, slower).",
                  0),
       boolParam("tangentialDrift", true, "Tangential drift",
-                "Move vertices tangentially to keep the triangles even (paper eq. 2.5)."),
+                "Explicit: the paper's drift each step. Semi-implicit: 2 passes a step. Vector: none."),
       enumParam("boundary", indexOf(FlowOptions{}.boundary), labels<BoundaryMode>(), "Boundary",
                 "Fixed: the boundary and the next ring stay put (G1). Slide: the boundary slides along itself."),
       boolParam("Selected", mesh.selectedFaces > 0, "Affect only selected faces",

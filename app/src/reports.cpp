@@ -55,7 +55,8 @@ nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int in
   j["flow"] = nameOf(opt.flow);
   if (result) {
     j["output"] = {{"vertices", result->mesh.vertexCount()}, {"faces", result->mesh.faceCount()}};
-    if (result->outputCurvature) j["energy_output"] = result->curvature.energy;
+    j["energy_input"] = result->energyInput;
+    j["energy_output"] = result->energyOutput;
   }
   return j;
 }

@@ -347,3 +347,10 @@ def test_an_open_sheet_keeps_its_rim_unless_close_rims(tmp_path):
     assert "1 hole filled, 1 skipped" in out, out
     out = cli("fill", tmp_path / "sheet.ply", "-o", tmp_path / "closed.ply", "--close-rims")
     assert "2 holes filled, 0 skipped" in out, out
+
+
+def test_zero_max_steps_means_no_limit(noisy):
+    V, F = elastica.read(noisy)
+    _, _, report = elastica.fair(V, F, max_steps=0, scheme="semi-implicit")
+    assert report["steps"] > 0 and report["stop"] != "max_steps"
+    assert report["energy_input"] > report["energy_output"]  # the whole mesh's, as `elastica curvature` gives
