@@ -19,7 +19,10 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <optional>
@@ -181,12 +184,35 @@ auto withoutGil(PythonProgress& progress, Job job) {
   return std::move(*result);
 }
 
+// A keyword argument checked against the range of the filter parameter it stands for, the error
+// in the caller's name ("max_steps must be >= 0", not the core's field names).
+void checkArgument(app::FilterId filter, const char* parameter, const char* keyword, double value) {
+  const app::FilterSpec spec = app::filterSpec(filter, {});
+  const app::ParamSpec& p = *spec.param(parameter);
+  if (value >= p.minValue && value <= p.maxValue) return;
+  auto text = [](double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.9g", x);
+    return std::string(b);
+  };
+  const std::string range = p.maxValue < std::numeric_limits<double>::infinity()
+                                ? "in " + text(p.minValue) + ".." + text(p.maxValue)
+                                : ">= " + text(p.minValue);
+  throw InvalidInputError(std::string(keyword) + " must be " + range + (p.rangeHint.empty() ? "" : " (" + p.rangeHint + ")") +
+                          ", not " + text(value));
+}
+
 // ---- the functions --------------------------------------------------------------------------
 
 py::tuple fairArrays(const py::object& V, const py::object& F, const py::object& selectedFaces,
                      const std::string& flow, const std::optional<std::string>& scheme, int subdivide,
                      long long maxSteps, double maxSeconds, std::optional<double> energyTol, bool tangential,
                      const std::string& boundary, bool remesh, bool flipEdges, const py::object& progress) {
+  using app::FilterId;
+  checkArgument(FilterId::Fairing, "subdivisionLevels", "subdivide", subdivide);
+  checkArgument(FilterId::Fairing, "maxSteps", "max_steps", double(maxSteps));
+  checkArgument(FilterId::Fairing, "maxSeconds", "max_seconds", maxSeconds);
+  if (energyTol) checkArgument(FilterId::Fairing, "energyTolerance", "energy_tol", *energyTol);
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   std::vector<std::uint8_t> selection = selectionFrom(selectedFaces, mesh.faceCount());
@@ -214,6 +240,9 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
 py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges, bool closeRims, const std::string& flow,
                      const std::optional<std::string>& scheme, std::optional<long long> maxSteps, double maxSeconds,
                      const py::object& progress) {
+  checkArgument(app::FilterId::FillHoles, "MaxHoleSize", "max_hole_edges", maxHoleEdges);
+  if (maxSteps) checkArgument(app::FilterId::FillHoles, "maxSteps", "max_steps", double(*maxSteps));
+  checkArgument(app::FilterId::FillHoles, "maxSeconds", "max_seconds", maxSeconds);
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   HoleFillOptions opt;
@@ -292,6 +321,19 @@ std::vector<std::string> enumWords(const std::vector<std::string>& labels) {
   throw std::logic_error("no choices table for a RichEnum");  // a filter_spec.cpp change without one
 }
 
+// A MeshLab float (stored as float, widened: 0.05 is 0.05000000074505806) as the decimal it was
+// typed as: the shortest one that is the same float.
+double typedDecimal(double widened) {
+  const float f = static_cast<float>(widened);
+  for (int digits = 1; digits <= 9; ++digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, widened);
+    const double d = std::strtod(text, nullptr);
+    if (static_cast<float>(d) == f) return d;
+  }
+  return widened;
+}
+
 py::dict filterSpecs() {
   static const std::map<app::FilterId, const char*> function = {
       {app::FilterId::Fairing, "fair"}, {app::FilterId::FillHoles, "fill_holes"}, {app::FilterId::Curvature, "curvature"}};
@@ -316,7 +358,7 @@ py::dict filterSpecs() {
           break;
         case app::ParamType::Float:
           d["type"] = "float";
-          d["default"] = p.defaultValue;
+          d["default"] = typedDecimal(p.defaultValue);
           break;
         case app::ParamType::Enum: {
           d["type"] = "enum";

@@ -140,6 +140,18 @@ def test_bad_options_and_selection(noisy):
                    {"max_steps": -1}):
         with pytest.raises(elastica.InvalidInputError):
             elastica.fair(V, F, **kwargs)
+    # Errors name the caller's keywords (snake_case), not the core's fields or MeshLab's names.
+    for function, kwargs, message in [
+            (elastica.fair, {"max_steps": -3}, "max_steps must be >= 0, not -3"),
+            (elastica.fair, {"max_seconds": -1}, "max_seconds must be >= 0"),
+            (elastica.fair, {"subdivide": 9}, "subdivide must be in 0..8"),
+            (elastica.fair, {"energy_tol": -0.5}, "energy_tol must be >= 0"),
+            (elastica.fill_holes, {"max_hole_edges": 2}, "max_hole_edges must be >= 3"),
+            (elastica.fill_holes, {"max_steps": -1}, "max_steps must be >= 0")]:
+        with pytest.raises(elastica.InvalidInputError) as e:
+            function(V, F, **kwargs)
+        assert str(e.value).startswith(message), str(e.value)
+        assert not any(name in str(e.value) for name in ("maxSteps", "maxSeconds", "subdivisionLevels", "MaxHoleSize"))
     for selection in (np.array([len(F)]), np.zeros(len(F), bool), np.zeros(3, bool)):
         with pytest.raises(elastica.InvalidInputError):
             elastica.fair(V, F, selection)
@@ -226,6 +238,8 @@ def test_filters_describe_the_meshlab_parameters(tmp_path):
                 assert p["default"] in p["choices"] and len(p["choices"]) == len(p["labels"])
     fair = {p["name"]: p for p in specs["fair"]["parameters"]}
     assert fair["scheme"]["default"] == "auto" and fair["scheme"]["choices"] == ["explicit", "semi-implicit", "vector", "auto"]
+    # Float defaults as the decimals typed, not MeshLab's float widened (0.05000000074505806).
+    assert repr(fair["energyTolerance"]["default"]) == "0.05" and repr(fair["maxSeconds"]["default"]) == "60.0"
     assert fair["subdivisionLevels"]["min"] == 0 and fair["subdivisionLevels"]["max"] == 8
     assert fair["Selected"]["keyword"] is None and fair["maxSteps"]["keyword"] == "max_steps"
 
