@@ -88,8 +88,10 @@ void runFill(FillArgs& a) {
               skipped, report.seconds);
   if (report.holes.empty())
     std::printf("the mesh has no holes: nothing to fill; wrote %s with the input's vertices and faces unchanged\n", a.output.c_str());
-  else
+  else if (io::formatFromExtension(a.output) == io::MeshFormat::Ply)
     std::printf("wrote %s (new faces selected and flagged by the face property elastica_new)\n", a.output.c_str());
+  else
+    std::printf("wrote %s\n", a.output.c_str());
 
   if (!a.report.empty()) {
     nlohmann::json j = app::fillingReport(result, a.fill);

@@ -308,18 +308,18 @@ def test_cmake_install_puts_the_module_on_the_python_path(tmp_path):
     assert os.path.join("/usr/local", subdir) in system_path
 
 
-def readme_blocks(section, language):
-    """The fenced `language` blocks of the README section whose heading starts with `section`."""
-    text = open(os.environ["ELASTICA_README"]).read()
+def doc_blocks(page, section, language):
+    """The fenced `language` blocks of the section of docs/`page` whose heading starts with `section`."""
+    text = open(os.path.join(os.path.dirname(os.environ["ELASTICA_README"]), "docs", page)).read()
     body = text.split("\n## " + section, 1)[1].split("\n## ", 1)[0]
     return [b.split("\n```", 1)[0] for b in body.split("```" + language + "\n")[1:]]
 
 
-def test_the_readme_python_example_runs_as_written(tmp_path, monkeypatch):
-    (block,) = readme_blocks("The Python module", "python")
+def test_the_documented_python_example_runs_as_written(tmp_path, monkeypatch):
+    (block,) = doc_blocks("python.md", "Example", "python")
     os.symlink(DATA, tmp_path / "data")
     monkeypatch.chdir(tmp_path)
-    exec(compile(block, "README.md", "exec"), {})
+    exec(compile(block, "docs/python.md", "exec"), {})
     V, F = elastica.read(tmp_path / "restored.ply")
     assert len(F) > len(elastica.read(BUNNY_HOLE)[1])
 
