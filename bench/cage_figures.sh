@@ -82,7 +82,7 @@ Made by \`$command_line\` (it writes this section and \`docs/figures/cage_*.png\
 read from that run). Each cage in \`data/cages/\` (written by hand, not by \`elastica generate\`; see
 data/README.md) is faired by \`elastica fair CAGE -o OUT --subdivide $levels\`: the default
 semi-implicit scheme with the working-resolution floor, isotropic and curvature-adaptive remeshing,
-Delaunay flips and the embedding guard (README, "The default"). Genus, energy (mixed areas),
+Delaunay flips and the embedding guard (docs/cli.md, "The default"). Genus, energy (mixed areas),
 faces crossing another face (vcglib's \`Clean::SelfIntersections\`, an implementation independent
 of the flow's guard) and smallest angles are measured afresh from the written files by
 \`bench/mesh_check\`; steps (attempts) come from the run's report, seconds are the command's wall

@@ -3,9 +3,10 @@
 #
 #   blender_addon/install.sh BUILD_DIR
 #
-# Copies blender_addon/elastica_blender/ to <scripts>/addons/ and the built Python module
-# (BUILD_DIR/python/elastica*.so) to <scripts>/modules/ (on Blender's module path), then enables the
-# add-on in Blender's saved preferences. <scripts> is $BLENDER_USER_SCRIPTS if set (then keep it set
+# Copies blender_addon/elastica_blender/ to <scripts>/addons/ with the built Python module
+# (BUILD_DIR/python/elastica*.so) inside it, and the module to <scripts>/modules/ too (on Blender's
+# module path, for scripts; `blender --factory-startup` leaves that folder off the path and the
+# add-on then loads its own copy), then enables the add-on in Blender's saved preferences. <scripts> is $BLENDER_USER_SCRIPTS if set (then keep it set
 # when you start Blender), else Blender's own user scripts folder (~/.config/blender/3.4/scripts).
 # $BLENDER names the blender executable (default: blender). Run it again after a rebuild.
 set -euo pipefail
@@ -23,6 +24,7 @@ mkdir -p "$scripts/addons" "$scripts/modules"
 rm -rf "$scripts/addons/elastica_blender"
 mkdir "$scripts/addons/elastica_blender"
 cp "$here"/elastica_blender/*.py "$scripts/addons/elastica_blender/"
+cp "${modules[0]}" "$scripts/addons/elastica_blender/"
 cp "${modules[0]}" "$scripts/modules/"
 BLENDER_USER_SCRIPTS="$scripts" "$blender" -b --python-exit-code 1 --python-expr \
   'import bpy; bpy.ops.preferences.addon_enable(module="elastica_blender"); bpy.ops.wm.save_userpref()' >/dev/null

@@ -23,7 +23,7 @@ struct CurvatureArgs {
 };
 
 void runCurvature(const CurvatureArgs& a) {
-  io::checkOutputPath(a.output, a.input);
+  checkMeshOutput(a.output, a.input);
   const TriMesh mesh = loadMesh(a.input).mesh;
   // readMesh refused inconsistent orientation and non-manifold edges and split bow-tie vertices.
   CurvatureMeasureOptions opt;
@@ -32,7 +32,7 @@ void runCurvature(const CurvatureArgs& a) {
   const app::CurvatureResult r = app::runCurvature(mesh, opt);
   const MeshCurvature& c = r.curvature;
 
-  writeCurvaturePly(a.output, mesh, r.outputH(), c.K, a.ascii, /*color=*/true);
+  writeCurvatureMesh(a.output, mesh, r.outputH(), c.K, a.ascii, /*color=*/true);
 
   std::printf("%s: %s, %s, %s, Euler characteristic %d\n", a.input.c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
               plural(mesh.faceCount(), "face").c_str(), c.boundaryEdges ? "with boundary" : "closed",
@@ -48,11 +48,11 @@ void addCurvatureCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "curvature",
       "Compute discrete mean curvature H, Gaussian curvature K and the total curvature energy\n"
-      "E = sum (4H^2 - 2K) A_i. Writes a PLY with per-vertex mean_curvature, gaussian_curvature,\n"
-      "quality (= H, +1/r on a sphere with outward normals) and a colour ramp by H.");
+      "E = sum (4H^2 - 2K) A_i. Writes per-vertex mean_curvature, gaussian_curvature,\n"
+      "quality (= H, +1/r on a sphere with outward normals) and a colour ramp by H (in a .ply output).");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
-  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
+  cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->add_option("--area", args->area,
                   "vertex area: mixed (Meyer et al.'s mixed Voronoi area, default) or barycentric (the paper's A/3)")
       ->transform(CLI::CheckedTransformer(app::nameMap<VertexArea>(), CLI::ignore_case));

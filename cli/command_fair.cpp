@@ -26,7 +26,7 @@ struct FairArgs {
 };
 
 void runFair(FairArgs& a) {
-  io::checkOutputPath(a.output, a.input);
+  checkMeshOutput(a.output, a.input);
   if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
   io::MeshFile file = loadMesh(a.input);
   const io::ReadReport& read = file.report;
@@ -77,7 +77,7 @@ void runFair(FairArgs& a) {
 
   // The file's other attributes are not written (the reader keeps only the face selection).
   const MeshCurvature& curv = result.curvature;
-  writeCurvaturePly(a.output, result.mesh, curv.H, curv.K, a.ascii, a.color);
+  writeCurvatureMesh(a.output, result.mesh, curv.H, curv.K, a.ascii, a.color);
   const TriMesh& mesh = result.mesh;
   const FlowReport& report = result.report;
 
@@ -86,7 +86,9 @@ void runFair(FairArgs& a) {
   std::printf("flow %s, scheme %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(a.flow.flow),
               app::nameOf(report.scheme), report.steps, report.seconds,
               app::nameOf(report.stop), report.stages.size(), report.stages.size() == 1 ? "" : "s");
-  std::printf("energy %.9g -> %.9g\n", report.energyInitial, report.energyFinal);
+  std::printf("energy %.9g -> %.9g\n", result.energyInput, result.energyOutput);
+  for (const std::string& line : result.log)  // the flow's own start, when it differs from the input's
+    if (line.rfind("the flow's energy", 0) == 0) std::printf("%s\n", line.c_str());
   std::printf("wrote %s\n", a.output.c_str());
 
   if (!a.report.empty()) {
@@ -105,9 +107,9 @@ void addFairCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "fair",
       "Fair a mesh with the discrete elastica flow F = -Lap H - 2H(H^2-K) (or a comparison flow),\n"
-      "optionally coarse to fine. Writes a PLY with H as quality (and colour with --color-by-mean-curvature).");
+      "optionally coarse to fine. Writes H as quality (and colour with --color-by-mean-curvature) in a .ply output.");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   addFlowOptions(*cmd, args->flow);
   addWholeMeshFlowOptions(*cmd, args->flow);
   cmd->add_option("--feature-size", args->featureSize,
@@ -124,7 +126,7 @@ void addFairCommand(CLI::App& app) {
       ->excludes(selected);
   cmd->add_option("--report", args->report, "write a JSON report (energies, steps, stages, energy history)");
   addProgressFlag(*cmd, args->progress);
-  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
   cmd->callback([args] { runFair(*args); });
 }

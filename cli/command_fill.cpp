@@ -26,7 +26,7 @@ struct FillArgs {
 };
 
 void runFill(FillArgs& a) {
-  io::checkOutputPath(a.output, a.input);
+  checkMeshOutput(a.output, a.input);
   if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
   VcgMesh vm;
   loadMesh(a.input, vm);
@@ -57,7 +57,7 @@ void runFill(FillArgs& a) {
   w.vertexColor = a.color;
   w.faceFlags = true;
   w.faceFloatAttributes = {"elastica_new"};
-  io::writePly(a.output, vm, w);
+  writeMeshFile(a.output, vm, w);
 
   int skipped = 0;
   for (std::size_t i = 0; i < report.holes.size(); ++i) {
@@ -88,8 +88,10 @@ void runFill(FillArgs& a) {
               skipped, report.seconds);
   if (report.holes.empty())
     std::printf("the mesh has no holes: nothing to fill; wrote %s with the input's vertices and faces unchanged\n", a.output.c_str());
-  else
+  else if (io::formatFromExtension(a.output) == io::MeshFormat::Ply)
     std::printf("wrote %s (new faces selected and flagged by the face property elastica_new)\n", a.output.c_str());
+  else
+    std::printf("wrote %s\n", a.output.c_str());
 
   if (!a.report.empty()) {
     nlohmann::json j = app::fillingReport(result, a.fill);
@@ -113,10 +115,13 @@ void addFillCommand(CLI::App& app) {
       "border that passes twice through one point, as two copies of a vertex, is split there and the\n"
       "copies merged where a patch joins their fans.)");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")
       ->capture_default_str()
       ->check(parameterRange(app::FilterId::FillHoles, "MaxHoleSize"));
+  cmd->add_flag("--close-rims", args->fill.closeRims,
+                "also close the outer rims of open surfaces (by default a scan's outline stays open: a border that "
+                "turns like an outline and spans a quarter or more of its piece's area; docs/restoration.md)");
   cmd->add_option("--stop-after", args->fill.stopAfter,
                   "triangulation, refinement, biharmonic (CGAL-like fairing) or flow (default)")
       ->transform(CLI::CheckedTransformer(app::nameMap<FillStage>(), CLI::ignore_case));
@@ -127,7 +132,7 @@ void addFillCommand(CLI::App& app) {
   addFlowOptions(*cmd, args->fill.flow);
   cmd->add_option("--report", args->report, "write a JSON report (one entry per hole)");
   addProgressFlag(*cmd, args->progress);
-  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
   cmd->callback([args] { runFill(*args); });
 }

@@ -22,7 +22,7 @@ struct GenerateArgs {
 };
 
 void runGenerate(const GenerateArgs& a) {
-  io::checkOutputPath(a.output);
+  checkMeshOutput(a.output);
   auto seg = [&](int k, int def) { return static_cast<int>(a.segments.size()) > k ? a.segments[k] : def; };
   TriMesh mesh;
   if (a.shape == "icosphere") mesh = shapes::icosphere(a.radius, a.level < 0 ? 4 : a.level);
@@ -33,7 +33,7 @@ void runGenerate(const GenerateArgs& a) {
   }
   else mesh = shapes::grid(seg(0, 10), seg(1, 10), a.spacing);
   if (a.noise > 0) shapes::addRadialNoise(mesh, a.noise, a.seed);
-  io::writePly(a.output, mesh, {}, !a.ascii);
+  writeMeshFile(a.output, mesh, {}, !a.ascii);
   std::printf("wrote %s: %s, %d vertices, %d faces\n", a.output.c_str(), a.shape.c_str(), mesh.vertexCount(),
               mesh.faceCount());
 }
@@ -47,7 +47,7 @@ void addGenerateCommand(CLI::App& app) {
   cmd->add_option("shape", args->shape, "icosphere | torus | grid | frame")
       ->required()
       ->check(CLI::IsMember({"icosphere", "torus", "grid", "frame"}));
-  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   cmd->add_option("--radius", args->radius, "icosphere radius")->capture_default_str();
   cmd->add_option("--level", args->level,
                   "1-to-4 subdivisions: icosphere 10*4^level+2 vertices (default 4); frame (default 1)")
@@ -66,7 +66,7 @@ void addGenerateCommand(CLI::App& app) {
                   "move each vertex radially from the origin by a random factor in [1-A, 1+A] (e.g. 0.05)")
       ->check(CLI::Range(0.0, 0.9));
   cmd->add_option("--seed", args->seed, "random seed for --noise")->capture_default_str();
-  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->callback([args] { runGenerate(*args); });
 }
 

@@ -113,7 +113,7 @@ ea::ParamValues resolveValues(const std::string& path, const MlxFilter& f, const
 }
 
 void runScript(const RunArgs& a) {
-  io::checkOutputPath(a.output, a.input);
+  checkMeshOutput(a.output, a.input);
   const std::vector<MlxFilter> script = readMlxScript(a.script);
   checkScript(a.script, script);
 
@@ -146,7 +146,7 @@ void runScript(const RunArgs& a) {
     if (outputs.curvature) w.vertexQuality = w.vertexColor = w.curvature = true;
     if (outputs.faceSelection) w.faceFlags = true;
   }
-  io::writePly(a.output, vm, w);
+  writeMeshFile(a.output, vm, w);
   std::printf("wrote %s (%s, %s)\n", a.output.c_str(), plural(vm.vn, "vertex").c_str(), plural(vm.fn, "face").c_str());
 }
 
@@ -159,11 +159,11 @@ void addRunCommand(CLI::App& app) {
       "Run a MeshLab filter script (.mlx) that uses the Elastica filters ('Discrete Elastica Fairing',\n"
       "'Fill Holes with Discrete Elastica', 'Discrete Elastica Curvature'), as meshlabserver with the\n"
       "Elastica plugin would. Parameters the script omits take their defaults (with a warning).\n"
-      "Writes a PLY.");
+      "Writes the mesh in the format of -o's extension.");
   cmd->add_option("-i,--input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   cmd->add_option("-s,--script", args->script, "MeshLab filter script (.mlx)")->required();
-  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->callback([args] { runScript(*args); });
 }
 

@@ -18,11 +18,11 @@ struct SubdivideArgs {
 };
 
 void runSubdivide(const SubdivideArgs& a) {
-  io::checkOutputPath(a.output, a.input);
+  checkMeshOutput(a.output, a.input);
   TriMesh mesh = loadMesh(a.input).mesh;
   const int inVertices = mesh.vertexCount(), inFaces = mesh.faceCount();
   for (int l = 0; l < a.levels; ++l) subdivideMidpoint(mesh);
-  io::writePly(a.output, mesh, {}, !a.ascii);
+  writeMeshFile(a.output, mesh, {}, !a.ascii);
   std::printf("%s: %s, %s -> %s, %s\nwrote %s\n", a.input.c_str(), plural(inVertices, "vertex").c_str(),
               plural(inFaces, "face").c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
               plural(mesh.faceCount(), "face").c_str(), a.output.c_str());
@@ -35,9 +35,9 @@ void addSubdivideCommand(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "subdivide", "Linear 1-to-4 subdivision: split every triangle at its edge midpoints (no vertex moves).");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, "output PLY file")->required();
+  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   cmd->add_option("--levels", args->levels, "number of 1-to-4 subdivisions")->capture_default_str()->check(CLI::Range(1, 6));
-  cmd->add_flag("--ascii", args->ascii, "write ASCII PLY (default: binary)");
+  cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->callback([args] { runSubdivide(*args); });
 }
 

@@ -1,6 +1,7 @@
 #include "flow_options.h"
 
 #include <elastica/app/choices.h>
+#include <elastica/app/filter_run.h>
 #include <elastica/app/filter_spec.h>
 
 #include <limits>
@@ -32,7 +33,7 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
                  "remeshing), semi-implicit (fill's default: implicit in the 4th-order part, normal moves) or explicit "
                  "(the paper's step; the bilaplacian flow's only scheme)")
       ->transform(CLI::CheckedTransformer(app::nameMap<Scheme>(), CLI::ignore_case));
-  cmd.add_option("--max-steps", opt.maxSteps, "step limit over all stages")
+  cmd.add_option("--max-steps", opt.maxSteps, "step limit over all stages (0: no limit)")
       ->capture_default_str()
       ->check(parameterRange(app::FilterId::Fairing, "maxSteps"));
   cmd.add_option("--max-seconds", opt.maxSeconds, "wall-time limit (0: none)")->check(CLI::NonNegativeNumber);
@@ -59,6 +60,7 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
     // The bilaplacian comparison flow is the paper's explicit iteration: without --scheme it runs
     // explicit rather than failing on the default.
     if (opt.flow == FlowType::Bilaplacian && command->count("--scheme") == 0) opt.scheme = Scheme::Explicit;
+    opt.maxSteps = app::stepLimit(opt.maxSteps);
     const CLI::Option* noRemesh = command->get_option_no_throw("--no-remesh");  // fair's, not fill's
     if (opt.scheme == Scheme::Explicit && noRemesh && noRemesh->count() > 0)
       throw CLI::ValidationError("--no-remesh", "applies to the vector and semi-implicit schemes only (the explicit one never remeshes)");

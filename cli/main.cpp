@@ -3,6 +3,7 @@
 // (Ctrl-C), SIGTERM or SIGHUP the file being written is deleted and the process dies of the
 // signal (a shell reports 128 + its number: 130 for Ctrl-C); existing files are never touched.
 #include "commands.h"
+#include "help_format.h"
 
 #include <elastica/errors.h>
 #include <elastica/io/atomic_file.h>
@@ -13,6 +14,7 @@ int main(int argc, char** argv) {
   elastica::io::installInterruptHandlers("elastica");
   CLI::App app{"elastica: fair triangle meshes with the discrete elastica flow\n"
                "(Yoshizawa & Belyaev, Fair Triangle Mesh Generation with Discrete Elastica, GMP 2002)"};
+  app.formatter(std::make_shared<elastica::cli::HelpFormatter>());  // subcommands inherit it
   app.require_subcommand(1);
   app.set_version_flag("--version", "elastica 0.1.0");
   elastica::cli::addCurvatureCommand(app);
@@ -27,7 +29,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "elastica: " << e.what() << "\n(run 'elastica --help' or 'elastica COMMAND --help')\n";
+    std::cerr << "elastica: " << elastica::cli::readableParseError(e.what()) << "\n(run 'elastica --help' or 'elastica COMMAND --help')\n";
     return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << "elastica: error: out of memory\n";

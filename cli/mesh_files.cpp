@@ -14,7 +14,30 @@ std::string plural(std::size_t n, const std::string& word) {
   return std::to_string(n) + " " + (ex ? word.substr(0, word.size() - 2) + "ices" : word + "s");
 }
 
-void writeCurvaturePly(const std::string& path, const TriMesh& mesh, const std::vector<double>& reportedH,
+namespace {
+void noteDropped(const std::string& path, const std::vector<std::string>& dropped) {
+  if (dropped.empty()) return;
+  std::string names;
+  for (const std::string& d : dropped) names += (names.empty() ? "" : ", ") + d;
+  std::cerr << "note: " << path << ": the format holds no " << names << "; written without "
+            << (dropped.size() == 1 ? "it" : "them") << " (use .ply to keep them)\n";
+}
+}  // namespace
+
+void checkMeshOutput(const std::string& output, const std::string& input) {
+  io::formatFromExtension(output);
+  io::checkOutputPath(output, input);
+}
+
+void writeMeshFile(const std::string& path, const TriMesh& mesh, const io::PlyAttributes& attributes, bool binary) {
+  noteDropped(path, io::writeMesh(path, mesh, attributes, binary));
+}
+
+void writeMeshFile(const std::string& path, VcgMesh& m, const io::PlyWriteOptions& opt) {
+  noteDropped(path, io::writeMesh(path, m, opt));
+}
+
+void writeCurvatureMesh(const std::string& path, const TriMesh& mesh, const std::vector<double>& reportedH,
                        const std::vector<double>& K, bool ascii, bool color) {
   const std::vector<float> h(reportedH.begin(), reportedH.end()), k(K.begin(), K.end());
   std::vector<std::array<std::uint8_t, 4>> colors;
@@ -26,7 +49,7 @@ void writeCurvaturePly(const std::string& path, const TriMesh& mesh, const std::
   }
   a.vertexQuality = &reportedH;
   a.vertexFloats = {{"mean_curvature", &h}, {"gaussian_curvature", &k}};
-  io::writePly(path, mesh, a, !ascii);
+  writeMeshFile(path, mesh, a, !ascii);
 }
 
 namespace {

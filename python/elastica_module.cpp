@@ -19,7 +19,10 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <optional>
@@ -181,6 +184,24 @@ auto withoutGil(PythonProgress& progress, Job job) {
   return std::move(*result);
 }
 
+// A keyword argument checked against the range of the filter parameter it stands for, the error
+// in the caller's name ("max_steps must be >= 0", not the core's field names).
+void checkArgument(app::FilterId filter, const char* parameter, const char* keyword, double value) {
+  const app::FilterSpec spec = app::filterSpec(filter, {});
+  const app::ParamSpec& p = *spec.param(parameter);
+  if (value >= p.minValue && value <= p.maxValue) return;
+  auto text = [](double x) {
+    char b[32];
+    std::snprintf(b, sizeof b, "%.9g", x);
+    return std::string(b);
+  };
+  const std::string range = p.maxValue < std::numeric_limits<double>::infinity()
+                                ? "in " + text(p.minValue) + ".." + text(p.maxValue)
+                                : ">= " + text(p.minValue);
+  throw InvalidInputError(std::string(keyword) + " must be " + range + (p.rangeHint.empty() ? "" : " (" + p.rangeHint + ")") +
+                          ", not " + text(value));
+}
+
 // ---- the functions --------------------------------------------------------------------------
 
 py::tuple fairArrays(const py::object& V, const py::object& F, const py::object& selectedFaces,
@@ -188,6 +209,11 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
                      long long maxSteps, double maxSeconds, double featureSize, std::optional<double> energyTol,
                      bool tangential, const std::string& boundary, bool remesh, bool flipEdges,
                      const py::object& progress) {
+  using app::FilterId;
+  checkArgument(FilterId::Fairing, "subdivisionLevels", "subdivide", subdivide);
+  checkArgument(FilterId::Fairing, "maxSteps", "max_steps", double(maxSteps));
+  checkArgument(FilterId::Fairing, "maxSeconds", "max_seconds", maxSeconds);
+  if (energyTol) checkArgument(FilterId::Fairing, "energyTolerance", "energy_tol", *energyTol);
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   std::vector<std::uint8_t> selection = selectionFrom(selectedFaces, mesh.faceCount());
@@ -195,7 +221,7 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   opt.flow = choice<FlowType>("flow", flow);
   if (scheme) opt.scheme = choice<Scheme>("scheme", *scheme);
   opt.subdivisionLevels = subdivide;
-  opt.maxSteps = maxSteps;
+  opt.maxSteps = app::stepLimit(maxSteps);
   opt.maxSeconds = maxSeconds;
   if (!(featureSize >= 0 && featureSize <= 1))
     throw InvalidInputError("feature_size must be in 0..1 (a fraction of the bounding-box diagonal)");
@@ -215,16 +241,20 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
                         toPython(app::fairingReport(r.report, opt, inV, inF, &r)));
 }
 
-py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges, const std::string& flow,
+py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges, bool closeRims, const std::string& flow,
                      const std::optional<std::string>& scheme, std::optional<long long> maxSteps, double maxSeconds,
                      const py::object& progress) {
+  checkArgument(app::FilterId::FillHoles, "MaxHoleSize", "max_hole_edges", maxHoleEdges);
+  if (maxSteps) checkArgument(app::FilterId::FillHoles, "maxSteps", "max_steps", double(*maxSteps));
+  checkArgument(app::FilterId::FillHoles, "maxSeconds", "max_seconds", maxSeconds);
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   HoleFillOptions opt;
   opt.maxHoleEdges = maxHoleEdges;
+  opt.closeRims = closeRims;
   opt.flow.flow = choice<FlowType>("flow", flow);
   if (scheme) opt.flow.scheme = choice<Scheme>("scheme", *scheme);
-  if (maxSteps) opt.flow.maxSteps = *maxSteps;
+  if (maxSteps) opt.flow.maxSteps = app::stepLimit(*maxSteps);
   opt.flow.maxSeconds = maxSeconds;
   PythonProgress hook{progress, nullptr};
   opt.flow.progress = hook.hook();
@@ -263,9 +293,7 @@ py::tuple readFile(const py::object& pathLike) {
 void writeFile(const py::object& pathLike, const py::object& V, const py::object& F, bool ascii) {
   const std::string path = pathOf(pathLike);
   const TriMesh mesh = toMesh(V, F);
-  if (io::formatFromExtension(path) != io::MeshFormat::Ply)
-    throw IoError(path + ": elastica.write writes PLY only (.ply)");
-  io::writePly(path, mesh, {}, !ascii);  // atomic: a failed write leaves no half-written file
+  io::writeMesh(path, mesh, {}, !ascii);  // by extension; atomic: a failed write leaves no half-written file
 }
 
 // ---- the MeshLab filters' parameters, for faces that build dialogs (the Blender add-on) ---------
@@ -274,10 +302,10 @@ void writeFile(const py::object& pathLike, const py::object& V, const py::object
 // selection, colouring, selecting new faces).
 std::string keywordOf(const std::string& parameter) {
   static const std::map<std::string, std::string> keywords = {
-      {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"},
+      {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"}, {"maxSeconds", "max_seconds"},
       {"subdivisionLevels", "subdivide"}, {"energyTolerance", "energy_tol"}, {"tangentialDrift", "tangential"},
       {"featureSize", "feature_size"},
-      {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"lambdaFix", "lambda_fix"},
+      {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"CloseRims", "close_rims"}, {"lambdaFix", "lambda_fix"},
       {"area", "area"}};
   const auto it = keywords.find(parameter);
   return it == keywords.end() ? std::string() : it->second;
@@ -296,6 +324,19 @@ std::vector<std::string> enumWords(const std::vector<std::string>& labels) {
       wordsOf<VertexArea>(labels, w) || wordsOf<H2KTreatment>(labels, w))
     return w;
   throw std::logic_error("no choices table for a RichEnum");  // a filter_spec.cpp change without one
+}
+
+// A MeshLab float (stored as float, widened: 0.05 is 0.05000000074505806) as the decimal it was
+// typed as: the shortest one that is the same float.
+double typedDecimal(double widened) {
+  const float f = static_cast<float>(widened);
+  for (int digits = 1; digits <= 9; ++digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, widened);
+    const double d = std::strtod(text, nullptr);
+    if (static_cast<float>(d) == f) return d;
+  }
+  return widened;
 }
 
 py::dict filterSpecs() {
@@ -327,11 +368,11 @@ py::dict filterSpecs() {
           break;
         case app::ParamType::Float:
           d["type"] = "float";
-          d["default"] = p.defaultValue;
+          d["default"] = typedDecimal(p.defaultValue);
           break;
         case app::ParamType::AbsPerc:  // a fraction of the bounding-box diagonal here
           d["type"] = "float";
-          d["default"] = p.defaultValue;
+          d["default"] = typedDecimal(p.defaultValue);
           d["description"] = p.tooltip + " A fraction of the bounding-box diagonal.";
           break;
         case app::ParamType::Enum: {
@@ -418,9 +459,9 @@ PYBIND11_MODULE(elastica, m) {
          "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto' (None: the core's default, '" +
          app::nameOf(flowDefaults.scheme) +
          "');\n"
-         "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_seconds 0: no limit; feature_size: a fairing\n"
-         "amount, a fraction of the bounding-box diagonal (bumps smaller than it are smoothed away, larger shapes\n"
-         "kept; report['stop'] 'feature_size'), 0: fair until converged; energy_tol None: the\n"
+         "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_steps and max_seconds 0: no limit;\n"
+         "feature_size: a fairing amount, a fraction of the bounding-box diagonal (bumps smaller than it are\n"
+         "smoothed away, larger shapes kept; report['stop'] 'feature_size'), 0: fair until converged; energy_tol None: the\n"
          "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
          "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
          "guard), so F_out may differ from F; False keeps the connectivity (`--no-remesh`). flip_edges: flip\n"
@@ -430,12 +471,14 @@ PYBIND11_MODULE(elastica, m) {
          "report: the dict `elastica fair --report` writes (without file names).")
             .c_str());
   m.def("fill_holes", &fillArrays, py::arg("V"), py::arg("F"), py::kw_only(),
-        py::arg("max_hole_edges") = fillDefaults.maxHoleEdges, py::arg("flow") = app::nameOf(fillDefaults.flow.flow),
+        py::arg("max_hole_edges") = fillDefaults.maxHoleEdges, py::arg("close_rims") = fillDefaults.closeRims,
+        py::arg("flow") = app::nameOf(fillDefaults.flow.flow),
         py::arg("scheme") = py::none(), py::arg("max_steps") = py::none(), py::arg("max_seconds") = 0.0,
         py::arg("progress") = py::none(),
-        "fill_holes(V, F, *, max_hole_edges=500, flow='elastica', scheme=None, max_steps=None, max_seconds=0,\n"
-        "           progress=None) -> (V_out, F_out, new_faces, report)\n\n"
-        "Fills every hole with at most max_hole_edges border edges, as `elastica fill`: the input's vertices\n"
+        "fill_holes(V, F, *, max_hole_edges=500, close_rims=False, flow='elastica', scheme=None, max_steps=None,\n"
+        "           max_seconds=0, progress=None) -> (V_out, F_out, new_faces, report)\n\n"
+        "Fills every hole with at most max_hole_edges border edges, as `elastica fill`; an open surface's outer\n"
+        "rim stays open unless close_rims (report['holes'][i]['rim'] tells which loops are rims). The input's vertices\n"
         "and faces come first, unchanged, and new_faces is True on the appended patch faces. scheme None: the\n"
         "fill's default (semi-implicit); max_steps None: the default budget. report: the dict\n"
         "`elastica fill --report` writes (without file names).");
@@ -450,8 +493,9 @@ PYBIND11_MODULE(elastica, m) {
         "STL corners merged, degenerate and duplicate faces removed, bow-tie vertices split; a malformed file\n"
         "raises elastica.IoError naming what and where.");
   m.def("write", &writeFile, py::arg("path"), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("ascii") = false,
-        "write(path, V, F, *, ascii=False)\n\nWrites a PLY file (binary unless ascii) atomically: on failure the\n"
-        "destination is left as it was.");
+        "write(path, V, F, *, ascii=False)\n\nWrites the format the extension names (.ply, .off, .obj, .stl; PLY and\n"
+        "STL binary unless ascii) atomically: on failure the destination is left as it was; an unknown extension\n"
+        "raises elastica.IoError.");
   m.def("filters", &filterSpecs,
         "filters() -> {'fair': spec, 'fill_holes': spec, 'curvature': spec}\n\n"
         "The MeshLab filters' parameters, for a face that builds a dialog (the Blender add-on): each spec has\n"

@@ -327,6 +327,21 @@ TEST(Cli, HelpForProgramAndSubcommands) {
   EXPECT_NE(run.output.find("--lambda-fix"), std::string::npos);
   EXPECT_NE(run.output.find("--area"), std::string::npos);
   EXPECT_EQ(runElastica("generate --help").exitCode, 0);
+  // Choices listed once, as words; no parser internals (value mappings, stored flag values).
+  for (const char* command : {"curvature", "fair", "fill", "generate", "run", "subdivide"}) {
+    run = runElastica(std::string(command) + " --help");
+    EXPECT_EQ(run.exitCode, 0) << command;
+    for (const char* internal : {"->", "{false}", "{true}", "ENUM:", "NONNEGATIVE", "POSITIVE"})
+      EXPECT_EQ(run.output.find(internal), std::string::npos) << command << " --help shows " << internal << "\n" << run.output;
+  }
+  run = runElastica("fair --help");
+  EXPECT_NE(run.output.find("--flow {bilaplacian|elastica|lmc}"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("--no-remesh "), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("--energy-tol FLOAT >= 0 (default 0.05)"), std::string::npos) << run.output;
+  run = runElastica("fair x.ply -o y.ply --scheme implicit");
+  EXPECT_EQ(run.exitCode, 2);
+  EXPECT_NE(run.output.find("--scheme: 'implicit' is not one of auto, explicit, semi-implicit, vector"), std::string::npos)
+      << run.output;
 }
 
 }  // namespace elastica

@@ -63,12 +63,18 @@ TEST(HoleFilling, RestoresASphereCap) {
 // Holes deeper than a hemisphere: the bi-Laplace patch is stretched unevenly and the flow inflates
 // it further; the patch is remeshed before the flow and again after it (smallest angle 1° on both
 // caps without; measured 30.7° and 29.0° with).
+// A sphere missing more than half is a bowl to the rim rule (rim_rule.h): its border is filled
+// only when rims are to be closed too.
 TEST(HoleFilling, DeepCapsRestoreWithoutSlivers) {
+  HoleFillOptions closeRims;
+  closeRims.closeRims = true;
   for (double degrees : {110.0, 120.0}) {
     TriMesh mesh = sphereWithCapHole(degrees);
     const TriMesh before = mesh;
-    const HoleFillReport r = fillHoles(mesh, {});
+    EXPECT_FALSE(fillHoles(mesh, {}).holes[0].filled) << degrees;  // a rim by default
+    const HoleFillReport r = fillHoles(mesh, closeRims);
     ASSERT_EQ(r.holes.size(), 1u);
+    EXPECT_TRUE(r.holes[0].rim) << degrees;
     EXPECT_TRUE(r.holes[0].reason.empty()) << degrees << ": " << r.holes[0].reason;
     for (int i = 0; i < before.vertexCount(); ++i) ASSERT_EQ(mesh.positions[i], before.positions[i]) << degrees << ": " << i;
     for (int f = 0; f < before.faceCount(); ++f) ASSERT_EQ(mesh.faces[f], before.faces[f]) << degrees << ": " << f;
@@ -93,8 +99,9 @@ TEST(HoleFilling, DeepCapsRestoreCoarseToFine) {
     TriMesh direct = sphereWithCapHole(degrees);
     TriMesh mesh = direct;
     const int before = mesh.vertexCount(), beforeFaces = mesh.faceCount();
-    const HoleFillReport d = fillHoles(direct, {});
     HoleFillOptions opt;
+    opt.closeRims = true;  // the 120° cap is a bowl's rim to the rim rule
+    const HoleFillReport d = fillHoles(direct, opt);
     opt.coarseFirstFromEdges = 3;
     const HoleFillReport r = fillHoles(mesh, opt);
     ASSERT_EQ(r.holes.size(), 1u);

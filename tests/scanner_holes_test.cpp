@@ -192,9 +192,18 @@ TEST(ScannerHoles, IslandInsideAHoleIsReportedAndBothLoopsLeftOpen) {
     if (onIsland[v]) apart.positions[v] += 2 * frame.normal;
   // Only the island's vertices lie within the cut's radius: the moved vertices are exactly its own.
   for (const Face& t : apart.faces) ASSERT_TRUE(onIsland[t[0]] == onIsland[t[1]] && onIsland[t[1]] == onIsland[t[2]]);
+  // The hole is filled; the fragment, now a piece of its own, is an open disc whose border is its
+  // outer rim (rim_rule.h): left open, unless rims are to be closed too.
+  TriMesh apartToo = apart;
   const HoleFillReport moved = fillHoles(apart, {});
   ASSERT_EQ(moved.holes.size(), 2u);
-  for (const HoleReport& hole : moved.holes) EXPECT_TRUE(hole.filled) << hole.borderEdges << ": " << hole.reason;
+  for (const HoleReport& hole : moved.holes)
+    EXPECT_EQ(hole.filled, !hole.rim) << hole.borderEdges << ": " << hole.reason;
+  EXPECT_EQ(moved.filledCount(), 1);
+  HoleFillOptions closeRims;
+  closeRims.closeRims = true;
+  const HoleFillReport both = fillHoles(apartToo, closeRims);
+  for (const HoleReport& hole : both.holes) EXPECT_TRUE(hole.filled) << hole.borderEdges << ": " << hole.reason;
 }
 
 // ------------------------------------------------------------------ thin features

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -59,11 +60,13 @@ double checkedNumber(const ParamValues& v, const FilterSpec& spec, const std::st
 void readFlowParameters(const ParamValues& v, const FilterSpec& spec, FlowOptions& o) {
   o.flow = enumValue<FlowType>(v, spec, "flow");
   o.scheme = enumValue<Scheme>(v, spec, "scheme");
-  o.maxSteps = static_cast<long long>(checkedNumber(v, spec, "maxSteps"));
+  o.maxSteps = stepLimit(static_cast<long long>(checkedNumber(v, spec, "maxSteps")));
   if (v.has("maxSeconds")) o.maxSeconds = checkedNumber(v, spec, "maxSeconds");
 }
 
 }  // namespace
+
+long long stepLimit(long long steps) { return steps == 0 ? std::numeric_limits<long long>::max() : steps; }
 
 std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o) {
   if (!progress) return {};
@@ -76,7 +79,7 @@ std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, 
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     double f = double(p.level) / stages;
     if (maxSeconds > 0) f = std::max(f, seconds / maxSeconds);
-    if (maxSteps > 0) f = std::max(f, double(p.step) / maxSteps);
+    if (maxSteps > 0 && maxSteps < 1e18) f = std::max(f, double(p.step) / maxSteps);
     f = std::min(0.99, std::max(f, *shown));
     *shown = f;
     std::string what = "Elastica flow: level " + std::to_string(p.level) + ", step " + std::to_string(p.step) +
@@ -154,18 +157,25 @@ FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, cons
   FairingResult r;
   const std::vector<Face> inputFaces = mesh.faces;
   const int inVertices = mesh.vertexCount();
+  const CurvatureMeasureOptions measure{opt.area, opt.curvature};
+  r.energyInput = measureCurvature(mesh, measure).energy;
   r.report = selected ? fair(mesh, FaceSet::fromFlags(selection), opt) : fair(mesh, opt);
   const FlowReport& report = r.report;
   if (report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
 
   r.connectivityChanged = mesh.faces != inputFaces;
   r.outputCurvature = outputCurvature;
-  if (outputCurvature) r.curvature = measureCurvature(mesh, {opt.area, opt.curvature});
+  if (outputCurvature) r.curvature = measureCurvature(mesh, measure);
+  r.energyOutput = outputCurvature ? r.curvature.energy : measureCurvature(mesh, measure).energy;
   r.log.push_back(std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) + " vertices, " +
                   std::to_string(report.steps) + " steps in " + number(report.seconds, "%.2f") + " s (" +
                   labelOf(report.stop) + ")");
-  r.log.push_back("total curvature energy " + number(report.energyInitial, "%.9g") + " -> " +
-                  number(report.energyFinal, "%.9g"));
+  r.log.push_back("total curvature energy " + number(r.energyInput, "%.9g") + " -> " + number(r.energyOutput, "%.9g"));
+  // The flow's own start differs when it refined or remeshed the mesh first, or faired a region.
+  if (std::abs(report.energyInitial - r.energyInput) > 1e-9 * std::abs(r.energyInput))
+    r.log.push_back(std::string("the flow's energy, ") + (selected ? "over the region that moves" : "on its working mesh") +
+                    (report.preSubdivisions + report.remeshings > 0 ? " after refinement or remeshing" : "") + ": " +
+                    number(report.energyInitial, "%.9g") + " -> " + number(report.energyFinal, "%.9g"));
   r.mesh = std::move(mesh);
   if (selected) r.selection = FaceSet(report.regionFaces).flags(r.mesh.faces.size());
   return r;
@@ -196,6 +206,7 @@ HoleFillOptions fillHolesOptions(const ParamValues& v) {
   const FilterSpec spec = filterSpec(FilterId::FillHoles, {});
   HoleFillOptions o;
   o.maxHoleEdges = static_cast<int>(checkedNumber(v, spec, "MaxHoleSize"));
+  o.closeRims = v.getBool("CloseRims");
   readFlowParameters(v, spec, o.flow);
   return o;
 }

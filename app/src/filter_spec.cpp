@@ -64,8 +64,8 @@ ParamSpec schemeParam(Scheme defaultScheme) {
                    "steps.");
 }
 ParamSpec maxStepsParam() {
-  return intParam("maxSteps", int(FlowOptions{}.maxSteps), "Maximum steps",
-                  "Over all stages; the flow normally stops earlier, at the energy plateau.",
+  return intParam("maxSteps", 0, "Maximum steps",
+                  "Over all stages; 0: no limit (the flow stops at its plateau first).",
                   0, kUnbounded);
 }
 // The wall-time limit: MeshLab 2020.09 cannot cancel a running filter (its progress callback
@@ -100,7 +100,7 @@ FilterSpec fairing(const MeshFacts& mesh) {
                  "Stop when the energy's relative change per unit of normalised time is below this.",
                  0),
       boolParam("tangentialDrift", true, "Tangential drift",
-                "Move vertices tangentially to keep the triangles even (paper eq. 2.5)."),
+                "Explicit: the paper's drift each step. Semi-implicit: 2 passes a step. Vector: none."),
       enumParam("boundary", indexOf(FlowOptions{}.boundary), labels<BoundaryMode>(), "Boundary",
                 "Fixed: the boundary and the next ring stay put (G1). Slide: the boundary slides along itself."),
       boolParam("Selected", mesh.selectedFaces > 0, "Affect only selected faces",
@@ -127,6 +127,10 @@ FilterSpec fillHoles() {
       intParam("MaxHoleSize", defaults.maxHoleEdges, "Max size to be closed",
                "Holes with more border edges than this stay open (counted as in MeshLab's Close Holes).",
                3, kUnbounded, "a hole has 3 edges or more"),
+      boolParam("CloseRims", defaults.closeRims, "Close rims too",
+                "Off: the outer rim of an open surface (a scan's outline: a border that turns like an outline and "
+                "spans a quarter or more of its piece's area) stays open and only the holes inside are filled. "
+                "On: rims are closed too."),
       flowParam(),
       schemeParam(defaults.flow.scheme),
       maxStepsParam(),

@@ -28,7 +28,7 @@ nlohmann::json toJson(const FlowReport& r) {
 }
 
 nlohmann::json toJson(const HoleReport& h) {
-  nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}};
+  nlohmann::json j{{"border_edges", h.borderEdges}, {"filled", h.filled}, {"rim", h.rim}};
   if (!h.reason.empty()) j["reason"] = h.reason;
   if (!h.filled) return j;
   j["new_vertices"] = h.newVertices;
@@ -56,7 +56,8 @@ nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int in
   if (opt.featureSize > 0) j["feature_size"] = opt.featureSize;  // the length (the CLI's fraction × diagonal)
   if (result) {
     j["output"] = {{"vertices", result->mesh.vertexCount()}, {"faces", result->mesh.faceCount()}};
-    if (result->outputCurvature) j["energy_output"] = result->curvature.energy;
+    j["energy_input"] = result->energyInput;
+    j["energy_output"] = result->energyOutput;
   }
   return j;
 }
@@ -68,6 +69,7 @@ nlohmann::json fillingReport(const FillHolesResult& r, const HoleFillOptions& op
                    {"output", {{"vertices", r.mesh.vertexCount()}, {"faces", r.mesh.faceCount()}}},
                    {"stop_after", nameOf(opt.stopAfter)},
                    {"max_hole_edges", opt.maxHoleEdges},
+                   {"close_rims", opt.closeRims},
                    {"filled", filled},
                    {"skipped", static_cast<int>(report.holes.size()) - filled},
                    {"vertex_copies_merged", report.welds.size()},

@@ -1,9 +1,20 @@
 """The three operators. Their redo-panel properties are built from elastica.filters(): the MeshLab
 filters' parameters with their defaults, labels and ranges, so the add-on holds no numbers of its own.
 
+Run from the menu or F3 (invoke), fairing and filling compute in a worker thread while Blender stays
+responsive: the status bar shows the step and energy, Esc cancels (the module's progress callback
+returns False) and leaves the mesh as it was. The time limit ("Time limit (s)", 60 s by default as in
+MeshLab) stops a long run, which then keeps what it reached, as MeshLab's filters do. From the redo
+panel or a script (execute) they run to the end in the foreground.
+
 Edit Mode: the operator leaves Edit Mode once at its start and enters it again once at its end (a
 mode switch syncs the edit mesh; nothing toggles per step). Undo restores the mesh (REGISTER, UNDO).
 Errors (non-manifold meshes, nothing selected, a diverging flow, ...) are reported, never raised."""
+import importlib.util
+import glob
+import os
+import sys
+import threading
 import traceback
 
 import bpy
@@ -12,14 +23,31 @@ from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
 
 from . import mesh_arrays as ma
 
-try:
-    import elastica
-except ImportError as e:  # the add-on cannot work at all: say how to fix it when it is enabled
-    raise ImportError(
-        "Elastica: the Python module 'elastica' was not found (" + str(e) + "). Build the project and run "
-        "blender_addon/install.sh BUILD_DIR, which puts the module into Blender's scripts/modules folder, "
-        "or start Blender with --python-use-system-env and PYTHONPATH at build/python."
-    ) from e
+
+def _import_elastica():
+    """The module from Python's path, else the copy install.sh puts beside the add-on (Blender's
+    --factory-startup leaves the user modules folder off the path, not the add-on's own folder)."""
+    try:
+        import elastica
+        return elastica
+    except ImportError as e:
+        bundled = glob.glob(os.path.join(os.path.dirname(__file__), "elastica*.so"))
+        if not bundled:
+            raise ImportError(
+                "Elastica: the Python module 'elastica' was not found (" + str(e) + "). Build the project and "
+                "run blender_addon/install.sh BUILD_DIR, which puts the module beside the add-on, or start "
+                "Blender with --python-use-system-env and PYTHONPATH at build/python.") from e
+        spec = importlib.util.spec_from_file_location("elastica", bundled[0])
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        sys.modules["elastica"] = module
+        return module
+
+
+elastica = _import_elastica()
+
+# The worker runs of modal operators still going (what the status bar shows; tests read it).
+running_jobs = []
 
 # Parameters the face decides rather than the module: the property each becomes (None: implied by
 # the mode, as Edit Mode's selection is).
@@ -52,9 +80,45 @@ def _properties(filter_name):
     return out
 
 
+class Job:
+    """compute(progress) in a worker thread; cancel() makes the next progress call return False (the
+    module then raises elastica.Error and nothing is changed). No bpy here: the main thread reads
+    latest, done(), result, error and cancelled."""
+
+    def __init__(self, compute):
+        self.latest = None
+        self.result = self.error = None
+        self._cancel = threading.Event()
+        self.cancelled = False
+        self._thread = threading.Thread(target=self._run, args=(compute,), daemon=True)
+        self._thread.start()
+
+    def _progress(self, p):
+        self.latest = p
+        return not self._cancel.is_set()
+
+    def _run(self, compute):
+        try:
+            self.result = compute(self._progress)
+        except Exception as e:  # elastica.Error on cancel, or a failure: handed to the main thread
+            self.error = e
+        self.cancelled = self._cancel.is_set() and self.error is not None
+
+    def cancel(self):
+        self._cancel.set()
+
+    def done(self):
+        return not self._thread.is_alive()
+
+    def wait(self, timeout=None):
+        self._thread.join(timeout)
+        return self.done()
+
+
 class ElasticaOperator:
     bl_options = {'REGISTER', 'UNDO'}
     filter_name = ""
+    background = False  # invoke runs it in a worker thread (modal), Esc cancels
     params = {}  # {property: (parameter, bpy property)}, set by _operator_class
     extra = ()   # properties of the add-on's own, drawn after the parameters
 
@@ -68,6 +132,7 @@ class ElasticaOperator:
         return {p["keyword"]: getattr(self, name) for name, (p, _) in self.params.items() if p["keyword"]}
 
     def execute(self, context):
+        """In the foreground, to the end (the redo panel, scripts)."""
         ob = context.active_object
         edit = context.mode == 'EDIT_MESH'
         wm = context.window_manager
@@ -76,7 +141,8 @@ class ElasticaOperator:
         wm.progress_begin(0, 9999)
         self._status(context, self.bl_label + "…")
         try:
-            message = self.run(context, ob.data, edit)
+            compute = self.prepare(ob.data, edit)
+            message = self.apply(context, ob.data, compute(self.progress(context)))
         except (elastica.Error, ValueError) as e:
             self.report({'ERROR'}, f"{self.bl_label}: {e}")
             return {'CANCELLED'}
@@ -91,6 +157,77 @@ class ElasticaOperator:
                 bpy.ops.object.mode_set(mode='EDIT')
         self.report({'INFO'}, message)
         return {'FINISHED'}
+
+    def invoke(self, context, event):
+        """From the menu: the computation in a worker thread, Esc cancels (modal, timer-driven)."""
+        if not self.background:
+            return self.execute(context)
+        ob = context.active_object
+        self._edit = context.mode == 'EDIT_MESH'
+        if self._edit:
+            bpy.ops.object.mode_set(mode='OBJECT')
+        try:
+            compute = self.prepare(ob.data, self._edit)
+        except (elastica.Error, ValueError) as e:
+            self._leave(context)
+            self.report({'ERROR'}, f"{self.bl_label}: {e}")
+            return {'CANCELLED'}
+        self._object = ob
+        self._job = Job(compute)
+        running_jobs.append(self._job)
+        wm = context.window_manager
+        self._timer = wm.event_timer_add(0.1, window=context.window)
+        wm.modal_handler_add(self)
+        self._status(context, f"{self.bl_label}… (Esc cancels)")
+        return {'RUNNING_MODAL'}
+
+    def modal(self, context, event):
+        job = self._job
+        if event.type == 'ESC' and event.value == 'PRESS':
+            job.cancel()
+            self._status(context, f"{self.bl_label}: cancelling…")
+        if event.type == 'TIMER':
+            if not job.done():
+                p = job.latest
+                if p is not None:
+                    self._status(context, f"{self.bl_label}: stage {p['level']}, step {p['step']}, "
+                                          f"E = {p['energy']:.6g}, {p['seconds']:.1f} s (Esc cancels)")
+                return {'RUNNING_MODAL'}
+            return self._finish(context)
+        # The view can still be turned and zoomed; the rest waits for the run.
+        if event.type in {'MIDDLEMOUSE', 'WHEELUPMOUSE', 'WHEELDOWNMOUSE', 'TRACKPADPAN', 'TRACKPADZOOM'}:
+            return {'PASS_THROUGH'}
+        return {'RUNNING_MODAL'}
+
+    def _finish(self, context):
+        context.window_manager.event_timer_remove(self._timer)
+        job = self._job
+        running_jobs.remove(job)
+        try:
+            if job.cancelled:
+                self.report({'WARNING'}, f"{self.bl_label}: cancelled; the mesh is as it was")
+                return {'CANCELLED'}
+            if job.error is not None:
+                if isinstance(job.error, (elastica.Error, ValueError)):
+                    self.report({'ERROR'}, f"{self.bl_label}: {job.error}")
+                else:
+                    traceback.print_exception(type(job.error), job.error, job.error.__traceback__)
+                    self.report({'ERROR'}, f"{self.bl_label} failed: {type(job.error).__name__}: {job.error}")
+                return {'CANCELLED'}
+            try:
+                message = self.apply(context, self._object.data, job.result)
+            except (elastica.Error, ValueError) as e:
+                self.report({'ERROR'}, f"{self.bl_label}: {e}")
+                return {'CANCELLED'}
+            self.report({'INFO'}, message)
+            return {'FINISHED'}
+        finally:
+            self._leave(context)
+
+    def _leave(self, context):
+        self._status(context, None)
+        if self._edit:
+            bpy.ops.object.mode_set(mode='EDIT')
 
     def _status(self, context, text):
         if context.workspace is not None:
@@ -139,8 +276,10 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
                       "them fixed; Object Mode: the whole mesh). Works on the mesh in object space")
     filter_name = "fair"
     extra = ("keep_connectivity",)
+    background = True
 
-    def run(self, context, me, edit):
+    def prepare(self, me, edit):
+        """Checks and reads the mesh; returns compute(progress) -> the module's result (no bpy)."""
         arrays = ma.MeshArrays(me)
         selection = None
         if edit:
@@ -153,8 +292,13 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
             if edit:
                 raise ValueError("subdivision and remeshing work on the whole mesh: use them in Object Mode")
             self.check_shape_keys(me, "Subdivision or remeshing")
-        V, F, report = elastica.fair(arrays.V, arrays.F, selection, remesh=not keep,
-                                     progress=self.progress(context), **kwargs)
+        self._arrays, self._keep = arrays, keep
+        return lambda progress: elastica.fair(arrays.V, arrays.F, selection, remesh=not keep, progress=progress,
+                                              **kwargs)
+
+    def apply(self, context, me, result):
+        V, F, report = result
+        keep, arrays = self._keep, self._arrays
         if keep:
             ma.write_positions(me, V)
         else:
@@ -162,9 +306,10 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
         if self.color_by_mean_curvature:
             measure_curvature(me, V, F)
         moved = len(V) if not keep else int((V != arrays.V).any(axis=1).sum())
+        limit = " (stopped at the time limit)" if report["stop"] == "max_seconds" else ""
         return (f"Elastica: {moved} of {len(V)} vertices moved; E {report['energy_initial']:.6g} -> "
                 f"{report['energy_final']:.6g} in {report['steps']} steps ({report['stop']}), "
-                f"{report['seconds']:.2f} s")
+                f"{report['seconds']:.2f} s{limit}")
 
 
 class MESH_OT_elastica_fill_holes_base(ElasticaOperator):
@@ -173,21 +318,27 @@ class MESH_OT_elastica_fill_holes_base(ElasticaOperator):
     bl_description = ("Fill holes with patches faired by the discrete elastica flow; the new faces come "
                       "selected. Works on the mesh in object space")
     filter_name = "fill_holes"
+    background = True
 
-    def run(self, context, me, edit):
+    def prepare(self, me, edit):
         arrays = ma.MeshArrays(me)
-        select_new = self.select_new_faces
-        V, F, new_faces, report = elastica.fill_holes(arrays.V, arrays.F, progress=self.progress(context),
-                                                      **self.keywords())
+        kwargs = self.keywords()
+        self._arrays = arrays
+        return lambda progress: elastica.fill_holes(arrays.V, arrays.F, progress=progress, **kwargs)
+
+    def apply(self, context, me, result):
+        V, F, new_faces, report = result
         added = int(new_faces.sum())
         if added:
             self.check_shape_keys(me, "Filling holes")
-            polygons = ma.append_triangles(me, V, F[len(arrays.F):])
-            if select_new:
+            polygons = ma.append_triangles(me, V, F[len(self._arrays.F):])
+            if self.select_new_faces:
                 ma.select_only_polygons(me, polygons)
         open_holes = report["skipped"]
+        rims = sum(h["rim"] for h in report["holes"] if not h["filled"])
         return (f"Elastica: filled {report['filled']} of {len(report['holes'])} holes with {added} faces"
-                + (f" ({open_holes} left open)" if open_holes else "") + f", {report['seconds']:.2f} s")
+                + (f" ({open_holes} left open, {rims} of them rims)" if open_holes else "")
+                + f", {report['seconds']:.2f} s")
 
 
 class MESH_OT_elastica_curvature_base(ElasticaOperator):
@@ -198,8 +349,11 @@ class MESH_OT_elastica_curvature_base(ElasticaOperator):
                       "(red low H, blue high). In object space: H scales with 1/(object scale)")
     filter_name = "curvature"
 
-    def run(self, context, me, edit):
+    def prepare(self, me, edit):
         arrays = ma.MeshArrays(me)
+        return lambda progress: arrays
+
+    def apply(self, context, me, arrays):
         c = measure_curvature(me, arrays.V, arrays.F, **self.keywords())
         return f"Elastica: H in [{c['H'].min():.6g}, {c['H'].max():.6g}], total curvature energy E = {c['energy']:.6g}"
 

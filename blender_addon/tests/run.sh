@@ -2,7 +2,7 @@
 # The add-on's ctest entries; exit 77 (ctest SKIP_RETURN_CODE) when Blender (or xvfb-run) is missing.
 #   run.sh headless            test_addon.py in blender -b (PYTHONPATH: the module and the add-on)
 #   run.sh gui OUT.png         shot.py in Blender's window under Xvfb, the screenshot into OUT.png
-#   run.sh install             the README's Blender lines into a scratch HOME, then the installed
+#   run.sh install             docs/blender.md's install line into a scratch HOME, then the installed
 #                              add-on (enabled from the saved preferences, module from scripts/modules)
 # Environment (set by CMake): ELASTICA_SOURCE_DIR, ELASTICA_BUILD_DIR, ELASTICA_DATA_DIR, PYTHONPATH.
 set -euo pipefail
@@ -22,10 +22,12 @@ case "$1" in
   install)
     scratch=$(mktemp -d)
     trap 'rm -rf "$scratch"' EXIT
-    # The README's lines as written, with this build folder for `build` and a scratch HOME.
-    block=$(awk '/^## Blender/{on=1; next} on && /^## /{exit} on && /^```sh$/{b=1; next} b && /^```$/{exit} b' \
-      "$ELASTICA_SOURCE_DIR/README.md")
-    [[ -n "$block" ]] || { echo "no sh block in the README's Blender section"; exit 1; }
+    # docs/blender.md's install lines as written, with this build folder for `build` and a scratch HOME.
+    block=$(awk '/^## Install/{on=1; next} on && /^## /{exit} on && /^```sh$/{b=1; next} b && /^```$/{exit} b' \
+      "$ELASTICA_SOURCE_DIR/docs/blender.md")
+    [[ -n "$block" ]] || { echo "no sh block in docs/blender.md's Install section"; exit 1; }
+    # The README shows the same line.
+    grep -qF "$block" "$ELASTICA_SOURCE_DIR/README.md" || { echo "README.md's Blender line differs from docs/blender.md's"; exit 1; }
     echo "$block"
     (cd "$ELASTICA_SOURCE_DIR" && env -u PYTHONPATH HOME="$scratch" \
        bash -euo pipefail -c "${block//install.sh build/install.sh \"$ELASTICA_BUILD_DIR\"}")

@@ -9,6 +9,7 @@ checks it under Xvfb."""
 import math
 import os
 import sys
+import time
 import traceback
 
 import addon_utils
@@ -232,6 +233,77 @@ def test_bad_input_is_reported_not_raised():
         raise AssertionError("bilaplacian semi-implicit accepted")
     except RuntimeError as e:
         assert "Elastica" in str(e), e
+
+
+def test_time_limit_stops_a_long_run_within_ten_percent():
+    # A 40,962-vertex noisy sphere, explicit scheme: far longer than the limit without it.
+    ob = noisy_sphere("long", level=6, noise=0.02)
+    P0 = positions(ob.data).copy()
+    props = bpy.ops.mesh.elastica_fair.get_rna_type().properties
+    assert props["max_seconds"].default == 60 and props["max_seconds"].name == "Time limit (s)"
+    limit = 5.0  # the whole operator, reading and writing the mesh included, within 10 %
+    start = time.perf_counter()
+    assert bpy.ops.mesh.elastica_fair(scheme="explicit", max_steps=10**9, max_seconds=limit) == {'FINISHED'}
+    took = time.perf_counter() - start
+    print(f"  time limit {limit} s: the operator took {took:.2f} s")
+    assert limit <= took <= 1.1 * limit, took
+    assert (positions(ob.data) != P0).any()  # what it reached is kept, as MeshLab's filters keep it
+    bpy.data.objects.remove(ob)
+
+
+def test_cancel_through_the_progress_callback_leaves_the_mesh():
+    # What Esc does in the modal operator: the worker's next progress call returns False.
+    from elastica_blender import operators
+    ob = noisy_sphere("cancelled", level=6, noise=0.02)
+    me = ob.data
+    P0 = positions(me).copy()
+    op = bpy.ops.mesh.elastica_fair.get_rna_type()
+    assert op.bl_rna.identifier == "MESH_OT_elastica_fair"
+    cls = next(c for c in operators.classes if c.bl_idname == "mesh.elastica_fair")
+    arrays = operators.ma.MeshArrays(me)
+    job = operators.Job(lambda progress: operators.elastica.fair(arrays.V, arrays.F, scheme="explicit",
+                                                                 max_steps=10**9, max_seconds=60, progress=progress))
+    for _ in range(100):  # running, reporting progress
+        if job.latest is not None:
+            break
+        time.sleep(0.05)
+    assert not job.done() and job.latest is not None
+    start = time.perf_counter()
+    job.cancel()
+    assert job.wait(5), "the cancel was not taken within 5 s"
+    print(f"  cancelled after {job.latest['step']} steps, {time.perf_counter() - start:.3f} s after the request")
+    assert job.cancelled and isinstance(job.error, elastica.Error) and "cancel" in str(job.error).lower()
+    assert job.result is None and (positions(me) == P0).all()
+    assert cls.background and hasattr(cls, "modal")
+    bpy.data.objects.remove(ob)
+
+
+def test_imports_under_factory_startup_from_the_add_on_folder():
+    # install.sh puts the module beside the add-on: a Blender started with --factory-startup (no user
+    # modules folder on the path, no PYTHONPATH) imports it from there.
+    import shutil
+    import subprocess
+    import tempfile
+    build = os.environ["ELASTICA_BUILD_DIR"]
+    source = os.environ["ELASTICA_SOURCE_DIR"]
+    with tempfile.TemporaryDirectory() as scripts:
+        addon = os.path.join(scripts, "addons", "elastica_blender")
+        shutil.copytree(os.path.join(source, "blender_addon", "elastica_blender"), addon)
+        for so in os.listdir(os.path.join(build, "python")):
+            if so.startswith("elastica") and so.endswith(".so"):
+                shutil.copy(os.path.join(build, "python", so), addon)
+        env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+        env["BLENDER_USER_SCRIPTS"] = scripts
+        r = subprocess.run([bpy.app.binary_path, "-b", "--factory-startup", "--python-exit-code", "1", "--python-expr",
+                            "import addon_utils, bpy, elastica, sys\n"
+                            "addon_utils.enable('elastica_blender', default_set=True, handle_error=None)\n"
+                            "import elastica\n"
+                            "assert elastica.__file__.startswith(sys.argv[-1]), elastica.__file__\n"
+                            "bpy.ops.mesh.primitive_ico_sphere_add(radius=2)\n"
+                            "assert bpy.ops.mesh.elastica_curvature() == {'FINISHED'}\n"
+                            "print('factory-startup import: ok')", "--", addon],
+                           env=env, capture_output=True, text=True, timeout=60)
+        assert "factory-startup import: ok" in r.stdout, r.stdout + r.stderr
 
 
 def main():

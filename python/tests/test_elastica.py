@@ -140,6 +140,18 @@ def test_bad_options_and_selection(noisy):
                    {"max_steps": -1}):
         with pytest.raises(elastica.InvalidInputError):
             elastica.fair(V, F, **kwargs)
+    # Errors name the caller's keywords (snake_case), not the core's fields or MeshLab's names.
+    for function, kwargs, message in [
+            (elastica.fair, {"max_steps": -3}, "max_steps must be >= 0, not -3"),
+            (elastica.fair, {"max_seconds": -1}, "max_seconds must be >= 0"),
+            (elastica.fair, {"subdivide": 9}, "subdivide must be in 0..8"),
+            (elastica.fair, {"energy_tol": -0.5}, "energy_tol must be >= 0"),
+            (elastica.fill_holes, {"max_hole_edges": 2}, "max_hole_edges must be >= 3"),
+            (elastica.fill_holes, {"max_steps": -1}, "max_steps must be >= 0")]:
+        with pytest.raises(elastica.InvalidInputError) as e:
+            function(V, F, **kwargs)
+        assert str(e.value).startswith(message), str(e.value)
+        assert not any(name in str(e.value) for name in ("maxSteps", "maxSeconds", "subdivisionLevels", "MaxHoleSize"))
     for selection in (np.array([len(F)]), np.zeros(len(F), bool), np.zeros(3, bool)):
         with pytest.raises(elastica.InvalidInputError):
             elastica.fair(V, F, selection)
@@ -200,8 +212,17 @@ def test_read_write_round_trip_and_errors(noisy, tmp_path):
     with pytest.raises(OSError):
         elastica.read(bad)
     with pytest.raises(elastica.IoError):
-        elastica.write(tmp_path / "out.obj", V, F)
-    assert not (tmp_path / "out.obj").exists()
+        elastica.write(tmp_path / "out.xyz", V, F)
+    assert not (tmp_path / "out.xyz").exists()
+    elastica.write(tmp_path / "rt.off", V, F)  # by extension; OFF keeps every double
+    V2, F2 = elastica.read(tmp_path / "rt.off")
+    assert (F2 == F).all() and (V2 == V).all()
+    elastica.write(tmp_path / "rt.obj", V, F)  # OBJ is read back by tinyobjloader, in float
+    V2, F2 = elastica.read(tmp_path / "rt.obj")
+    assert (F2 == F).all() and same(V2, V, rel=1e-7)
+    elastica.write(tmp_path / "rt.stl", V, F)  # STL: unshared float32 corners, merged again on reading
+    V2, F2 = elastica.read(tmp_path / "rt.stl")
+    assert len(V2) == len(V) and same(V2[F2], V[F], rel=1e-7)
 
 
 def test_filters_describe_the_meshlab_parameters(tmp_path):
@@ -217,6 +238,8 @@ def test_filters_describe_the_meshlab_parameters(tmp_path):
                 assert p["default"] in p["choices"] and len(p["choices"]) == len(p["labels"])
     fair = {p["name"]: p for p in specs["fair"]["parameters"]}
     assert fair["scheme"]["default"] == "auto" and fair["scheme"]["choices"] == ["explicit", "semi-implicit", "vector", "auto"]
+    # Float defaults as the decimals typed, not MeshLab's float widened (0.05000000074505806).
+    assert repr(fair["energyTolerance"]["default"]) == "0.05" and repr(fair["maxSeconds"]["default"]) == "60.0"
     assert fair["subdivisionLevels"]["min"] == 0 and fair["subdivisionLevels"]["max"] == 8
     assert fair["Selected"]["keyword"] is None and fair["maxSteps"]["keyword"] == "max_steps"
 
@@ -285,18 +308,18 @@ def test_cmake_install_puts_the_module_on_the_python_path(tmp_path):
     assert os.path.join("/usr/local", subdir) in system_path
 
 
-def readme_blocks(section, language):
-    """The fenced `language` blocks of the README section whose heading starts with `section`."""
-    text = open(os.environ["ELASTICA_README"]).read()
+def doc_blocks(page, section, language):
+    """The fenced `language` blocks of the section of docs/`page` whose heading starts with `section`."""
+    text = open(os.path.join(os.path.dirname(os.environ["ELASTICA_README"]), "docs", page)).read()
     body = text.split("\n## " + section, 1)[1].split("\n## ", 1)[0]
     return [b.split("\n```", 1)[0] for b in body.split("```" + language + "\n")[1:]]
 
 
-def test_the_readme_python_example_runs_as_written(tmp_path, monkeypatch):
-    (block,) = readme_blocks("The Python module", "python")
+def test_the_documented_python_example_runs_as_written(tmp_path, monkeypatch):
+    (block,) = doc_blocks("python.md", "Example", "python")
     os.symlink(DATA, tmp_path / "data")
     monkeypatch.chdir(tmp_path)
-    exec(compile(block, "README.md", "exec"), {})
+    exec(compile(block, "docs/python.md", "exec"), {})
     V, F = elastica.read(tmp_path / "restored.ply")
     assert len(F) > len(elastica.read(BUNNY_HOLE)[1])
 
@@ -326,3 +349,37 @@ def test_feature_size_is_a_fraction_of_the_diagonal(noisy):
     assert (spec["min"], spec["max"], spec["default"]) == (0.0, 1.0, 0.0)
     with pytest.raises(elastica.InvalidInputError, match="feature_size"):
         elastica.fair(V, F, feature_size=1.5)
+
+
+def test_an_open_sheet_keeps_its_rim_unless_close_rims(tmp_path):
+    # The issue's case: a 20x20 grid with a hole cut in its middle. The hole is filled, the rim stays
+    # open (it came back as a closed pillow before); close_rims and --close-rims close it too.
+    n = 20
+    V = np.array([(x, y, 0.0) for y in range(n + 1) for x in range(n + 1)])
+    F = []
+    for y in range(n):
+        for x in range(n):
+            a, b, c, d = y * (n + 1) + x, y * (n + 1) + x + 1, (y + 1) * (n + 1) + x + 1, (y + 1) * (n + 1) + x
+            for t in ((a, b, c), (a, c, d)):
+                if np.hypot(*(V[list(t)].mean(axis=0)[:2] - n / 2)) > 3:
+                    F.append(t)
+    F = np.array(F)
+    used = np.unique(F)
+    V, F = V[used], np.searchsorted(used, F)
+    _, _, new, report = elastica.fill_holes(V, F)
+    assert report["filled"] == 1 and [h["rim"] for h in report["holes"]].count(True) == 1
+    assert "outer rim" in next(h["reason"] for h in report["holes"] if h["rim"])
+    _, _, new_all, report = elastica.fill_holes(V, F, close_rims=True)
+    assert report["filled"] == 2 and report["close_rims"] and new_all.sum() > new.sum()
+    elastica.write(tmp_path / "sheet.ply", V, F)
+    out = cli("fill", tmp_path / "sheet.ply", "-o", tmp_path / "filled.ply")
+    assert "1 hole filled, 1 skipped" in out, out
+    out = cli("fill", tmp_path / "sheet.ply", "-o", tmp_path / "closed.ply", "--close-rims")
+    assert "2 holes filled, 0 skipped" in out, out
+
+
+def test_zero_max_steps_means_no_limit(noisy):
+    V, F = elastica.read(noisy)
+    _, _, report = elastica.fair(V, F, max_steps=0, scheme="semi-implicit")
+    assert report["steps"] > 0 and report["stop"] != "max_steps"
+    assert report["energy_input"] > report["energy_output"]  # the whole mesh's, as `elastica curvature` gives

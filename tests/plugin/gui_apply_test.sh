@@ -8,9 +8,9 @@
 # in ARTEFACT_DIR: apply_CASE.png (the screen after Apply), export_CASE.png (the export options),
 # for fairing also apply_fairing_running.png (the progress bar mid-run), and meshlab_CASE.log.
 # Run under `xvfb-run -a -s "-screen 0 1920x1080x24"` (ctest does). Usage:
-#   gui_apply_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR DATA_DIR ARTEFACT_DIR
+#   gui_apply_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR DATA_DIR ARTEFACT_DIR ELASTICA_EXE
 set -euo pipefail
-prefix_script=$1 plugin=$2 prefix=$3 data=$4 artefacts=$5
+prefix_script=$1 plugin=$2 prefix=$3 data=$4 artefacts=$5 elastica=$6
 source "$(dirname "$0")/gui_lib.sh"   # fail, wait_display, wait_window
 [[ -n "${DISPLAY:-}" ]] || fail "no X display (run under xvfb-run -a)"
 for tool in xdotool import; do command -v $tool >/dev/null || fail "$tool not installed (scripts/setup.sh)"; done
@@ -101,6 +101,14 @@ expect_log "Discrete Elastica Fairing: 1839 -> [0-9]* vertices, [0-9]* steps in 
 n=$(grep -o "1839 -> [0-9]* vertices" "$log" | awk '{ print $3 }')
 [[ $(ply_count "$out" vertex) == "$n" ]] || fail "fairing: exported $(ply_count "$out" vertex) vertices, the log says $n"
 for p in red quality; do expect_no_property $p; done
+
+# Fairing a selection: the bunny's flank hole filled flat by `elastica fill --stop-after refinement`,
+# whose new faces come selected (PLY face flags); the dialog's 'Affect only selected faces' is then
+# on, and after Apply the selection is the faired patch as remeshed (apply_fairing_selected.png).
+"$elastica" fill "$data/bunny_flank_hole.ply" -o "$artefacts/bunny_flat_patch.ply" --stop-after refinement >/dev/null
+case=fairing_selected; run_case fairing_selected "$artefacts/bunny_flat_patch.ply" "Discrete Elastica Fairing"
+expect_log "Discrete Elastica Fairing: total curvature energy "
+expect_log "Discrete Elastica Fairing: the flow's energy, over the region that moves"
 
 # Filling the bunny's flank hole: faces appended, the new ones selected, no colour or quality.
 case=fill; run_case fill "$data/bunny_flank_hole.ply" "Fill Holes with Discrete Elastica"

@@ -73,6 +73,6 @@ check_dialog() {
 }
 
 check_dialog fairing "Discrete Elastica Fairing" 11
-check_dialog fill "Fill Holes with Discrete Elastica" 6
+check_dialog fill "Fill Holes with Discrete Elastica" 7
 check_dialog curvature "Discrete Elastica Curvature" 2
 echo "PASS: each filter's dialog shown, its help fits; screenshots in $artefacts (fairing_dialog.png, help_*.png)"

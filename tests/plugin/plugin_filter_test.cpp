@@ -5,6 +5,8 @@
 
 #include <elastica/shapes.h>
 #include <elastica/app/filter_run.h>
+#include <elastica/mesh_curvature.h>
+#include <elastica/vcg_adapter.h>
 
 #include <gtest/gtest.h>
 
@@ -128,7 +130,7 @@ TEST_F(PluginFilter, HelpTextsReadTheSameAsRichText) {
     EXPECT_TRUE(info.endsWith("Geometric Modeling and Processing 2002, pp. 119-123.")) << info.toStdString();
     ++strings;
   }
-  EXPECT_EQ(strings, 2 * (10 + 6 + 2) + 3);  // fairing, fill and curvature parameters; 3 descriptions
+  EXPECT_EQ(strings, 2 * (11 + 7 + 2) + 3);  // fairing, fill and curvature parameters; 3 descriptions
 }
 
 // The time limit: a parameter of every flow filter (60 s by default); reaching it keeps the mesh
@@ -334,4 +336,70 @@ TEST_F(PluginFilter, FillHolesAppendsAndSelectsNewFaces) {
   EXPECT_TRUE(changed & MeshModel::MM_FACENUMBER);
   EXPECT_TRUE(changed & MeshModel::MM_FACEFLAGSELECT);
   EXPECT_FALSE(changed & (MeshModel::MM_VERTCOLOR | MeshModel::MM_FACECOLOR | MeshModel::MM_VERTQUALITY));
+}
+
+namespace {
+double faceArea(const CFaceO& f) { return double(vcg::DoubleArea(f)) / 2; }
+vcg::Point3f centroid(const CFaceO& f) { return (f.cP(0) + f.cP(1) + f.cP(2)) / 3.0f; }
+}  // namespace
+
+// A selected fair at the defaults (remeshing on): afterwards the face selection is the faired
+// region as remeshed, within the footprint the user selected and of about its area, and no vertex
+// is selected. The log's first energy is the input's, as `elastica curvature` measures it.
+TEST_F(PluginFilter, SelectedFairKeepsTheRegionSelectedAndNoVertex) {
+  for (int levels : {0, 1}) {  // 1: the selection subdivided, the mesh rebuilt
+    log.Clear();
+    mm->cm.Clear();
+    elastica::TriMesh mesh = elastica::shapes::icosphere(1.0, 3);
+    elastica::shapes::addRadialNoise(mesh, 0.05, 7);
+    fill(mm->cm, mesh);
+    double selectedArea = 0;
+    int selectedBefore = 0;
+    for (auto& f : mm->cm.face)
+      if (centroid(f).Normalize().Z() > 0.3f) {
+        f.SetS();
+        selectedArea += faceArea(f);
+        ++selectedBefore;
+      }
+    const double inputEnergy = elastica::measureCurvature(elastica::toTriMesh(mm->cm), {}).energy;
+    RichParameterList params = defaults("Discrete Elastica Fairing");
+    ASSERT_TRUE(params.getBool("Selected"));
+    params.setValue("subdivisionLevels", IntValue(levels));
+    ASSERT_TRUE(plugin.applyFilter(action("Discrete Elastica Fairing"), doc, params, nullptr)) << plugin.errorMsg().toStdString();
+    const std::string text = logLines(log).join("\n").toStdString();
+    double areaAfter = 0;
+    int selectedAfter = 0;
+    for (const auto& f : mm->cm.face) {
+      if (f.IsD()) continue;
+      const float z = centroid(f).Normalize().Z();
+      if (f.IsS()) {
+        ++selectedAfter;
+        areaAfter += faceArea(f);
+        EXPECT_GT(z, 0.2f) << levels;  // inside the footprint selected (its edge: the selected faces' centroids)
+      } else {
+        EXPECT_LT(z, 0.4f) << levels;
+      }
+    }
+    for (const auto& v : mm->cm.vert) EXPECT_FALSE(!v.IsD() && v.IsS()) << levels << ": a vertex is left selected";
+    std::printf("levels %d: selected faces %d -> %d, area %.4f -> %.4f\n", levels, selectedBefore, selectedAfter,
+                selectedArea, areaAfter);
+    if (levels == 1) EXPECT_GT(selectedAfter, 3 * selectedBefore);  // the region refined, and all of it selected
+    EXPECT_NEAR(areaAfter, selectedArea, 0.15 * selectedArea) << levels;  // the noise's wrinkles faired away
+    char expected[64];
+    std::snprintf(expected, sizeof expected, "total curvature energy %.9g -> ", inputEnergy);
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
+  }
+}
+
+// The Bilaplacian flow with the dialog's default scheme (Automatic) runs, explicitly, on a mesh
+// with a handle too (where Automatic picks Semi-implicit for the elastica flow); the default
+// maximum steps is 0, no limit.
+TEST_F(PluginFilter, BilaplacianRunsWithTheDefaultSchemeAndNoStepLimit) {
+  fill(mm->cm, elastica::shapes::torus(3, 1, 8, 4));
+  RichParameterList params = defaults("Discrete Elastica Fairing");
+  EXPECT_EQ(params.getInt("maxSteps"), 0);
+  params.setValue("flow", EnumValue(2));
+  ASSERT_TRUE(plugin.applyFilter(action("Discrete Elastica Fairing"), doc, params, nullptr)) << plugin.errorMsg().toStdString();
+  const std::string text = logLines(log).join("\n").toStdString();
+  EXPECT_EQ(text.find("stopped at maxSteps"), std::string::npos) << text;
 }

@@ -4,10 +4,14 @@
 // attributes] per vertex, "list uchar int vertex_indices" [flags] [float attributes] per face;
 // in ASCII, doubles as %.16g, float attributes as %f, every value followed by a space. Rows are
 // formatted into a buffer written a megabyte at a time (vcglib wrote each value by fwrite).
+// writeMesh picks the format from the file's extension: OFF, OBJ and STL carry positions and
+// faces (OFF also vertex colours), with doubles printed exactly (%.17g) where the format is text.
 #include <elastica/errors.h>
 #include <elastica/io/atomic_file.h>
+#include <elastica/io/mesh_reader.h>
 #include <elastica/io/mesh_writer.h>
 
+#include <array>
 #include <cerrno>
 #include <cstdarg>
 #include <cstdio>
@@ -137,9 +141,86 @@ void writeBody(Output& out, const TriMesh& mesh, const PlyAttributes& a, bool bi
   }
 }
 
-}  // namespace
+// Attributes `a` holds that `format` cannot carry, by name, in member order.
+std::vector<std::string> droppedBy(MeshFormat format, const PlyAttributes& a) {
+  std::vector<std::string> dropped;
+  if (format == MeshFormat::Ply) return dropped;
+  if (a.vertexNormals) dropped.push_back("vertex normals");
+  if (a.vertexColors && format != MeshFormat::Off) dropped.push_back("vertex colours");
+  if (a.vertexQuality) dropped.push_back("vertex quality");
+  for (const PlyFloatProperty& p : a.vertexFloats) dropped.push_back(p.name);
+  if (a.faceFlags) dropped.push_back("face flags (the selection)");
+  for (const PlyFloatProperty& p : a.faceFloats) dropped.push_back(p.name);
+  return dropped;
+}
 
-void writePly(const std::string& path, const TriMesh& mesh, const PlyAttributes& a, bool binary) {
+constexpr int kExactDigits = 17;  // enough to read every double back exactly
+
+// OFF ("COFF" with r g b a per vertex when colours are given); ASCII only.
+void writeOff(Output& out, const TriMesh& mesh, const PlyAttributes& a) {
+  out.raw(a.vertexColors ? "COFF\n" : "OFF\n");
+  out.raw(std::to_string(mesh.positions.size()) + " " + std::to_string(mesh.faces.size()) + " 0\n");
+  for (size_t v = 0; v < mesh.positions.size(); ++v) {
+    const Vec3& p = mesh.positions[v];
+    out.text("%.*g %.*g %.*g", kExactDigits, p[0], kExactDigits, p[1], kExactDigits, p[2]);
+    if (a.vertexColors) {
+      const auto& c = (*a.vertexColors)[v];
+      out.text(" %d %d %d %d", c[0], c[1], c[2], c[3]);
+    }
+    out.raw("\n");
+    out.endRow();
+  }
+  for (const Face& t : mesh.faces) {
+    out.text("3 %d %d %d\n", t[0], t[1], t[2]);
+    out.endRow();
+  }
+}
+
+// Wavefront OBJ: v and f lines, 1-based indices.
+void writeObj(Output& out, const TriMesh& mesh) {
+  out.raw("# written by elastica\n");
+  for (const Vec3& p : mesh.positions) {
+    out.text("v %.*g %.*g %.*g\n", kExactDigits, p[0], kExactDigits, p[1], kExactDigits, p[2]);
+    out.endRow();
+  }
+  for (const Face& t : mesh.faces) {
+    out.text("f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
+    out.endRow();
+  }
+}
+
+// STL, one facet per face with its unit normal (zero for a degenerate face); binary corners are
+// float32, as the format has them.
+void writeStl(Output& out, const TriMesh& mesh, bool binary) {
+  if (binary) {
+    std::string label = "elastica binary STL";
+    label.resize(80, ' ');
+    out.raw(label);
+    out.binary(static_cast<std::uint32_t>(mesh.faces.size()));
+  } else {
+    out.raw("solid elastica\n");
+  }
+  for (const Face& t : mesh.faces) {
+    const Vec3 &p0 = mesh.positions[t[0]], &p1 = mesh.positions[t[1]], &p2 = mesh.positions[t[2]];
+    Vec3 n = (p1 - p0).cross(p2 - p0);
+    const double length = n.norm();
+    if (length > 0) n /= length;
+    if (binary) {
+      for (const Vec3* p : std::array<const Vec3*, 4>{&n, &p0, &p1, &p2})
+        for (int k = 0; k < 3; ++k) out.binary(static_cast<float>((*p)[k]));
+      out.binary(std::uint16_t{0});
+    } else {
+      out.text("facet normal %.9g %.9g %.9g\n outer loop\n", n[0], n[1], n[2]);
+      for (const Vec3* p : std::array<const Vec3*, 3>{&p0, &p1, &p2})
+        out.text("  vertex %.*g %.*g %.*g\n", kExactDigits, (*p)[0], kExactDigits, (*p)[1], kExactDigits, (*p)[2]);
+      out.raw(" endloop\nendfacet\n");
+    }
+    out.endRow();
+  }
+  if (!binary) out.raw("endsolid elastica\n");
+}
+
+void checkAttributes(const std::string& path, const TriMesh& mesh, const PlyAttributes& a) {
   const size_t nv = mesh.positions.size(), nf = mesh.faces.size();
   checkLength(path, a.vertexNormals, nv, "the vertex normals");
   checkLength(path, a.vertexColors, nv, "the vertex colours");
@@ -156,12 +237,35 @@ void writePly(const std::string& path, const TriMesh& mesh, const PlyAttributes&
   for (const Face& t : mesh.faces)
     for (int v : t)
       if (v < 0 || static_cast<size_t>(v) >= nv) throw IoError(path + ": a face refers to a vertex the mesh does not have; nothing written");
+}
+
+void write(const std::string& path, MeshFormat format, const TriMesh& mesh, const PlyAttributes& a, bool binary) {
+  checkAttributes(path, mesh, a);
   writeAtomically(path, [&](const std::string& tmp) {
     Output out(path, tmp);
-    out.raw(header(mesh, a, binary));
-    writeBody(out, mesh, a, binary);
+    switch (format) {
+      case MeshFormat::Ply:
+        out.raw(header(mesh, a, binary));
+        writeBody(out, mesh, a, binary);
+        break;
+      case MeshFormat::Off: writeOff(out, mesh, a); break;
+      case MeshFormat::Obj: writeObj(out, mesh); break;
+      case MeshFormat::Stl: writeStl(out, mesh, binary); break;
+    }
     out.close();
   });
+}
+
+}  // namespace
+
+std::vector<std::string> writeMesh(const std::string& path, const TriMesh& mesh, const PlyAttributes& a, bool binary) {
+  const MeshFormat format = formatFromExtension(path);
+  write(path, format, mesh, a, binary);
+  return droppedBy(format, a);
+}
+
+void writePly(const std::string& path, const TriMesh& mesh, const PlyAttributes& a, bool binary) {
+  write(path, MeshFormat::Ply, mesh, a, binary);
 }
 
 }  // namespace elastica::io

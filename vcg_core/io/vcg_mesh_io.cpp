@@ -20,7 +20,11 @@ ReadReport readMesh(const std::string& path, VcgMesh& m) {
   return file.report;
 }
 
-void writePly(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt) {
+namespace {
+
+// Calls write(mesh, attributes) with the live elements of `m` and the attributes `opt` asks for.
+template <class Write>
+auto withArrays(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt, Write write) {
   TriMesh mesh = toTriMesh(m);
   std::vector<Vec3> normals;
   std::vector<std::array<std::uint8_t, 4>> colors;
@@ -65,7 +69,18 @@ void writePly(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt) {
   for (const std::string& name : faceNames) faceAttribute(name);
   for (size_t i = 0; i < vertexNames.size(); ++i) a.vertexFloats.push_back({vertexNames[i], &vertexValues[i]});
   for (size_t i = 0; i < faceNames.size(); ++i) a.faceFloats.push_back({faceNames[i], &faceValues[i]});
-  writePly(path, mesh, a, opt.binary);
+  return write(mesh, a);
+}
+
+}  // namespace
+
+void writePly(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt) {
+  withArrays(path, m, opt, [&](const TriMesh& mesh, const PlyAttributes& a) { writePly(path, mesh, a, opt.binary); });
+}
+
+std::vector<std::string> writeMesh(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt) {
+  formatFromExtension(path);  // an unknown extension fails before the copy
+  return withArrays(path, m, opt, [&](const TriMesh& mesh, const PlyAttributes& a) { return writeMesh(path, mesh, a, opt.binary); });
 }
 
 }  // namespace elastica::io

@@ -39,6 +39,11 @@ enum class FillStage {
 struct HoleFillOptions {
   /// Holes with more border edges than this are left open (MeshLab's "Max size to be closed").
   int maxHoleEdges = 500;
+  /// Also close the rims of open surfaces. By default a boundary loop that is an outer rim (it
+  /// turns like an outline, geodesic turning > 0, and spans at least a quarter of the area of its
+  /// piece of mesh: a terrain's edge, a face scan's outline, a lone triangle's sides; see
+  /// docs/restoration.md) stays open, and only the holes inside the surface are filled.
+  bool closeRims = false;
   FillStage stopAfter = FillStage::Flow;
   PatchRefinementOptions refinement;
   /// Holes with at least this many border edges are faired coarse to fine (0: never): the patch
@@ -98,6 +103,8 @@ struct FillStageReport {
 struct HoleReport {
   int borderEdges = 0;
   bool filled = false;
+  /// The loop is an open surface's outer rim (HoleFillOptions::closeRims): left open unless asked.
+  bool rim = false;
   std::string reason;        ///< why it was skipped, or what went wrong with the flow; empty if all went well
   int newVertices = 0, newFaces = 0;
   /// Total curvature energy of the patch's region (FillStageReport) at the bi-Laplace start …

@@ -406,7 +406,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   FlowOptions opt = requested;
   if (opt.scheme == Scheme::Automatic) opt.scheme = automaticScheme(mesh, faceSelected, opt);
   if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
-  if (opt.scheme == Scheme::Vector && opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;
+  if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
   FlowReport report;
   report.scheme = opt.scheme;
   Run run{opt, report};

@@ -11,12 +11,14 @@
 #include "restoration/patch_measure.h"
 #include "restoration/patch_refinement.h"
 #include "restoration/patch_remeshing.h"
+#include "restoration/rim_rule.h"
 #include "restoration/submesh.h"
 #include "restoration/tangential_relaxation.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -516,6 +518,7 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
       islandReason[islandOf[i]] = "an island of faces (a separate piece with a border of " + std::to_string(loops[i].edgeCount()) +
                                   " edges) lies inside it, which a patch would cross: left open";
   }
+  const std::vector<RimMeasure> rims = classifyRims(output, loops, [&](int v) { return border.at(v).meshAngle; });
   long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
   for (const HoleLoop& loop : loops) {
     const std::size_t l = static_cast<std::size_t>(&loop - loops.data());
@@ -538,6 +541,16 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
     }
     if (!islandReason[l].empty()) {
       skip(islandReason[l]);
+      continue;
+    }
+    hole.rim = rims[l].rim;
+    if (hole.rim && !opt.closeRims) {
+      char why[200];
+      std::snprintf(why, sizeof why,
+                    "the outer rim of an open surface (it turns by %+.0f deg like an outline and spans %.0f %% of its "
+                    "piece's area): left open; close rims to fill it",
+                    rims[l].turning * 180 / M_PI, 100 * rims[l].areaRatio);
+      skip(why);
       continue;
     }
     const auto triangles = triangulateHole(output.positions, loop, edgeExists);

@@ -50,9 +50,10 @@ void writeBack(const FairingResult& r, VcgMeshT& m) {
     writePositions(m, r.mesh.positions);
   } else {
     fromTriMesh(r.mesh, m);
+    // The face selection is the faired region as remeshed; no vertex is selected (MeshLab's face
+    // selection tools select none either).
     for (size_t f = 0; f < r.selection.size(); ++f)
       if (r.selection[f]) m.face[f].SetS();
-    vcg::tri::UpdateSelection<VcgMeshT>::VertexFromFaceStrict(m);
   }
   updateBoxAndNormals(m);
 }

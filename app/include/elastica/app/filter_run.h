@@ -50,12 +50,19 @@ FilterOutputs filterOutputs(FilterId id, const ParamValues& v);
 FlowOptions fairingOptions(const ParamValues& v);
 
 /// What a fairing run produced (the input copy is not touched on failure).
+/// FlowOptions::maxSteps for a step limit as the faces take it: 0 means no limit.
+long long stepLimit(long long steps);
+
 struct FairingResult {
   TriMesh mesh;                          ///< the faired mesh (subdivided if asked)
   std::vector<std::uint8_t> selection;   ///< the face selection, refined with the mesh (if one was given)
   bool connectivityChanged = false;      ///< subdivided or flipped: write the whole mesh back
   bool outputCurvature = false;          ///< `curvature` holds the result's H and K
   MeshCurvature curvature;               ///< of the result, when outputCurvature
+  /// The whole mesh's total curvature energy, of the input as given and of the result (as
+  /// `elastica curvature` measures them). report.energyInitial is the flow's own start: after any
+  /// refinement or remeshing, over the region that moves.
+  double energyInput = 0, energyOutput = 0;
   FlowReport report;
   std::vector<std::string> log;          ///< summary lines for the user
 };

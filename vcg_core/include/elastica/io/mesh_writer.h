@@ -1,4 +1,4 @@
-// Writing PLY files, atomically (atomic_file.h): a failure never leaves a half-written output.
+// Writing mesh files (PLY, OFF, OBJ, STL by extension), atomically (atomic_file.h): a failure never leaves a half-written output.
 // Our own writer, straight from arrays; its files are byte for byte those vcglib's ExporterPLY
 // wrote for the double-precision VcgMesh (same header, property order and number formats), so
 // MeshLab reads them as before.
@@ -40,6 +40,15 @@ struct PlyAttributes {
 /// @throws IoError on any failure (also an attribute of the wrong length); `path` is then untouched.
 void writePly(const std::string& path, const TriMesh& mesh, const PlyAttributes& attributes, bool binary);
 
+/// Writes `mesh` to `path` atomically in the format its extension names (.ply, .off, .obj, .stl,
+/// case-insensitive). PLY takes every attribute; OFF takes vertex colours (as COFF) and no other
+/// attribute; OBJ and STL take none. `binary` chooses binary PLY and STL (OFF and OBJ are text).
+/// @return the names of the attributes set in `attributes` that the format could not carry (empty
+///         for PLY), for the caller to tell its user.
+/// @throws IoError for an unknown extension (before anything is written) and as writePly.
+std::vector<std::string> writeMesh(const std::string& path, const TriMesh& mesh, const PlyAttributes& attributes,
+                                   bool binary);
+
 /// Which of a VcgMesh's attributes writePly(path, VcgMesh&, …) writes.
 struct PlyWriteOptions {
   bool binary = true;         ///< binary little-endian (default) or ASCII
@@ -55,5 +64,10 @@ struct PlyWriteOptions {
 /// Include <elastica/vcg_mesh.h> to call it.
 /// @throws IoError on any failure; `path` is then untouched.
 void writePly(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt);
+
+/// writeMesh for the live elements of `m` and the attributes `opt` asks for (opt.binary as above).
+/// @return the attributes asked for that the format of `path` could not carry.
+/// @throws IoError as writeMesh; `path` is then untouched.
+std::vector<std::string> writeMesh(const std::string& path, VcgMesh& m, const PlyWriteOptions& opt);
 
 }  // namespace elastica::io
