@@ -63,8 +63,10 @@ rev=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
 dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v -e '^?? ' -e 'docs/benchmarks.md' | wc -l || true)
 [[ $dirty == 0 ]] || rev="$rev (with uncommitted changes)"
 
-# The real-shape section has its own, slower run (bench/real_shapes.sh --page): kept as it was.
+# The real-shape and denoising sections have their own, slower runs (bench/real_shapes.sh --page,
+# bench/denoise.sh): kept as they were.
 real_shapes=$(sed -n '/^<!-- real-shapes/,/^<!-- \/real-shapes -->/p' "$page" 2>/dev/null || true)
+denoising=$(sed -n '/^<!-- denoise/,/^<!-- \/denoise -->/p' "$page" 2>/dev/null || true)
 {
   cat "$root/bench/benchmarks_header.md"
   cat <<EOF
@@ -159,6 +161,9 @@ EOF
   cat "$root/bench/benchmarks_footer.md"
   if [[ -n $real_shapes ]]; then
     printf '\n## Real shapes: the default fair on libcgal-demo scans\n\n%s\n' "$real_shapes"
+  fi
+  if [[ -n $denoising ]]; then
+    printf '\n## Denoising against MeshLab\n\n%s\n' "$denoising"
   fi
 } >"$page"
 echo "run_benchmarks: wrote $page" >&2
