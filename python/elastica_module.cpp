@@ -215,7 +215,7 @@ py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges,
                      const std::optional<std::string>& scheme, std::optional<long long> maxSteps, double maxSeconds,
                      const py::object& progress) {
   TriMesh mesh = toMesh(V, F);
-  app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
+  app::checkFillInput(mesh, app::RepairHints::None);
   HoleFillOptions opt;
   opt.maxHoleEdges = maxHoleEdges;
   opt.flow.flow = choice<FlowType>("flow", flow);

@@ -110,21 +110,35 @@ std::string limitWarning(StopReason stop, const FilterSpec& spec, const FlowOpti
 
 }  // namespace
 
-Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices, RepairHints hints) {
+namespace {
+
+// What every job refuses, with the words of `hints`.
+void rejectDefects(int inconsistentEdges, int nonManifoldVertices, RepairHints hints) {
   const bool meshlab = hints == RepairHints::MeshLab;
-  if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");
-  Topology topo(mesh.vertexCount(), mesh.faces);
-  if (topo.inconsistentEdgeCount() > 0)
-    throw InvalidInputError("faces are not consistently oriented (" + std::to_string(topo.inconsistentEdgeCount()) +
+  if (inconsistentEdges > 0)
+    throw InvalidInputError("faces are not consistently oriented (" + std::to_string(inconsistentEdges) +
                             " edges traversed the same way by both faces)" +
                             (meshlab ? "; re-orient them first: Filters > Normals > Re-Orient all faces coherently" : ""));
-  const int nonManifold = rejectNonManifoldVertices ? topo.nonManifoldVertexCount() : 0;  // counted per call
-  if (nonManifold > 0)
-    throw InvalidInputError(std::to_string(nonManifold) + " non-manifold vertices (several fans of faces meet there)" +
+  if (nonManifoldVertices > 0)
+    throw InvalidInputError(std::to_string(nonManifoldVertices) + " non-manifold vertices (several fans of faces meet there)" +
                             (meshlab ? "; split them first: Filters > Cleaning and Repairing > Repair non Manifold "
                                        "Vertices by splitting"
                                      : ""));
+}
+
+}  // namespace
+
+Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices, RepairHints hints) {
+  if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");
+  Topology topo(mesh.vertexCount(), mesh.faces);
+  rejectDefects(topo.inconsistentEdgeCount(), rejectNonManifoldVertices ? topo.nonManifoldVertexCount() : 0, hints);
   return topo;
+}
+
+void checkFillInput(const TriMesh& mesh, RepairHints hints) {
+  if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");
+  const FillInputDefects d = countFillInputDefects(mesh);
+  rejectDefects(d.inconsistentEdges, d.nonManifoldVertices, hints);
 }
 
 FilterOutputs filterOutputs(FilterId id, const ParamValues& v) {
@@ -229,7 +243,7 @@ FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outp
 
 FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress& progress) {
   HoleFillOptions opt = fillHolesOptions(v);
-  checkedTopology(mesh, /*rejectNonManifoldVertices=*/true);
+  checkFillInput(mesh, RepairHints::MeshLab);
   opt.flow.progress = flowProgress(progress, opt.flow);
   FillHolesResult r = runFillHoles(std::move(mesh), opt);
   const FilterSpec spec = filterSpec(FilterId::FillHoles, {});

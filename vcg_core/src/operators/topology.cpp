@@ -2,6 +2,7 @@
 #include <elastica/topology.h>
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <string>
 
@@ -43,8 +44,17 @@ int findRoot(std::vector<int>& parent, int i) {
 // sort of the edges. It runs at every connectivity change (each edge-flip pass, each hole patch,
 // remeshing), so it also avoids temporaries as large as the mesh: on a virtual machine their page
 // faults cost more than the work.
+namespace {
+std::atomic<int> largestTopology{0};
+}  // namespace
+
+int Topology::largestBuilt() { return largestTopology.load(); }
+void Topology::resetLargestBuilt() { largestTopology.store(0); }
+
 Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertexCount), faces_(faces) {
   if (vertexCount < 0) throw InvalidInputError("Topology: negative vertex count");
+  for (int seen = largestTopology.load(); seen < vertexCount && !largestTopology.compare_exchange_weak(seen, vertexCount);) {
+  }
   const int nf = static_cast<int>(faces.size());
   for (int f = 0; f < nf; ++f) {
     const Face& t = faces[f];

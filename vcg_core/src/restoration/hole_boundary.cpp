@@ -1,6 +1,7 @@
 #include "restoration/hole_boundary.h"
 
 #include <elastica/errors.h>
+#include <elastica/hole_filling.h>
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +78,33 @@ void checkFaceIndices(const TriMesh& mesh) {
   }
 }
 
+namespace {
+
+// The faces around `a` (`adjacency`) that hold the edge a–b: how many, and how many of them after
+// face `f` run it a → b as f does (an edge run one way by both faces counts once, at its first
+// face). More than two faces throws.
+struct EdgeFaces {
+  int count = 0, laterSameWay = 0;
+};
+EdgeFaces facesOnEdge(const TriMesh& mesh, const VertexFaceIndex& adjacency, int f, int a, int b) {
+  EdgeFaces e;
+  for (int g : adjacency[a]) {
+    const Face& s = mesh.faces[g];
+    for (int k = 0; k < 3; ++k) {
+      if (s[k] != b) continue;
+      ++e.count;
+      e.laterSameWay += g > f && s[(k + 2) % 3] == a;  // a comes just before b in g
+    }
+  }
+  if (e.count > 2) {
+    throw InvalidInputError("fill: non-manifold edge between vertices " + std::to_string(std::min(a, b)) + " and " +
+                            std::to_string(std::max(a, b)) + " (shared by " + std::to_string(e.count) + " faces)");
+  }
+  return e;
+}
+
+}  // namespace
+
 std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFaceIndex& adjacency) {
   std::vector<HoleHalfEdge> edges;
   for (int f = 0; f < mesh.faceCount(); ++f) {
@@ -84,19 +112,29 @@ std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFac
     for (int k = 0; k < 3; ++k) {
       // Edge a → b of face f: the faces around a that also use b share it.
       const int a = t[k], b = t[(k + 1) % 3];
-      int shared = 0;
-      for (int g : adjacency[a]) {
-        const Face& s = mesh.faces[g];
-        shared += s[0] == b || s[1] == b || s[2] == b;
-      }
-      if (shared > 2) {
-        throw InvalidInputError("fill: non-manifold edge between vertices " + std::to_string(std::min(a, b)) + " and " +
-                                std::to_string(std::max(a, b)) + " (shared by " + std::to_string(shared) + " faces)");
-      }
-      if (shared == 1) edges.push_back({b, a, t[(k + 2) % 3]});  // the hole runs against the face
+      if (facesOnEdge(mesh, adjacency, f, a, b).count == 1) edges.push_back({b, a, t[(k + 2) % 3]});  // the hole runs against the face
     }
   }
   return edges;
+}
+
+FillInputDefects countFillInputDefects(const TriMesh& mesh) {
+  checkFaceIndices(mesh);
+  const VertexFaceIndex adjacency(mesh);
+  FillInputDefects d;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k) {
+      d.inconsistentEdges += facesOnEdge(mesh, adjacency, f, t[k], t[(k + 1) % 3]).laterSameWay;
+    }
+  }
+  std::vector<int> fan;
+  std::vector<std::pair<int, int>> spokes;
+  for (int v = 0; v < mesh.vertexCount(); ++v) {
+    const VertexFaceIndex::Range faces = adjacency[v];
+    if (faces.size() >= 2 && fansAt(mesh, faces.begin(), faces.size(), v, fan, spokes) > 1) ++d.nonManifoldVertices;
+  }
+  return d;
 }
 
 namespace {

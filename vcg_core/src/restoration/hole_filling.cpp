@@ -359,34 +359,12 @@ bool weldCopies(AppendedMesh& mesh, VertexFaceIndex& adjacency, int kept, int re
 }
 
 // The faces around `v` grouped into fans (faces joined across an edge at v), each in face order.
-std::vector<std::vector<int>> fansAround(const TriMesh& mesh, const std::vector<int>& faces, int v) {
-  const int n = static_cast<int>(faces.size());
-  std::vector<int> parent(n);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  };
-  std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, local face)
-  for (int i = 0; i < n; ++i)
-    for (int x : mesh.faces[faces[i]])
-      if (x != v) spokes.emplace_back(x, i);
-  std::sort(spokes.begin(), spokes.end());
-  for (std::size_t k = 1; k < spokes.size(); ++k)
-    if (spokes[k].first == spokes[k - 1].first) parent[root(spokes[k].second)] = root(spokes[k - 1].second);
-  std::vector<std::vector<int>> fans;
-  std::vector<int> fanOf(n, -1);
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return faces[a] < faces[b]; });
-  for (int i : order) {
-    int& fan = fanOf[root(i)];
-    if (fan < 0) {
-      fan = static_cast<int>(fans.size());
-      fans.emplace_back();
-    }
-    fans[fan].push_back(faces[i]);
-  }
+std::vector<std::vector<int>> fansAround(const TriMesh& mesh, std::vector<int> faces, int v) {
+  std::sort(faces.begin(), faces.end());
+  std::vector<int> fan;
+  std::vector<std::pair<int, int>> spokes;
+  std::vector<std::vector<int>> fans(fansAt(mesh, faces.data(), faces.size(), v, fan, spokes));
+  for (std::size_t i = 0; i < faces.size(); ++i) fans[fan[i]].push_back(faces[i]);
   return fans;
 }
 
