@@ -219,7 +219,9 @@ FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outp
   r.originalFaces = mesh.faceCount();
   r.report = fillHoles(mesh, opt);
   r.outputCurvature = outputCurvature;
-  if (outputCurvature) r.curvature = measureCurvature(mesh, {opt.flow.area, opt.flow.curvature});
+  // In pieces: the whole output's Topology, Geometry and Curvature would be the run's peak (1.1 GB
+  // beside a 2.2-million-vertex scan, for `elastica fill`).
+  if (outputCurvature) r.curvature = measureCurvatureInPieces(mesh, {opt.flow.area, opt.flow.curvature});
   const HoleFillReport& report = r.report;
   for (const HoleReport& h : report.holes) {
     std::string line = "hole of " + std::to_string(h.borderEdges) + " border edges: ";
