@@ -39,11 +39,6 @@ int findRoot(std::vector<int>& parent, int i) {
 
 }  // namespace
 
-// Linear in the mesh size apart from sorting each vertex's handful of spokes: the corner lists
-// are a counting sort, the edges come vertex by vertex from them, and the one-rings are a counting
-// sort of the edges. It runs at every connectivity change (each edge-flip pass, each hole patch,
-// remeshing), so it also avoids temporaries as large as the mesh: on a virtual machine their page
-// faults cost more than the work.
 namespace {
 std::atomic<int> largestTopology{0};
 }  // namespace
@@ -51,6 +46,11 @@ std::atomic<int> largestTopology{0};
 int Topology::largestBuilt() { return largestTopology.load(); }
 void Topology::resetLargestBuilt() { largestTopology.store(0); }
 
+// Linear in the mesh size apart from sorting each vertex's handful of spokes: the corner lists
+// are a counting sort, the edges come vertex by vertex from them, and the one-rings are a counting
+// sort of the edges. It runs at every connectivity change (each edge-flip pass, each hole patch,
+// remeshing), so it also avoids temporaries as large as the mesh: on a virtual machine their page
+// faults cost more than the work.
 Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertexCount), faces_(faces) {
   if (vertexCount < 0) throw InvalidInputError("Topology: negative vertex count");
   for (int seen = largestTopology.load(); seen < vertexCount && !largestTopology.compare_exchange_weak(seen, vertexCount);) {
