@@ -54,14 +54,14 @@ constexpr double kEnergySlack = 1e-4;
 // A coarse-to-fine fill (HoleFillOptions::coarseFirstFromEdges) first works at this many times the
 // border's edge lengths: a quarter of the vertices.
 constexpr double kCoarseScale = 2;
-// A hole whose border has fewer edges than this is restored on one thread. Its flow, remeshing and
-// measures are many parallel regions of little work each, and libgomp's threads spin between them:
-// on the 2-core machine with other jobs running (load 6), the bunny's 408-edge hole (refined once,
-// a 5,800-vertex patch) took 2.5 s on two threads and 0.9 s on one (the same with
-// OMP_WAIT_POLICY=passive). The armadillo's 1,978-edge hole (a 184,000-vertex patch) keeps both
-// threads: on an idle machine they shortened its remeshing (5.7 → 4.5 s), though at load 5 it too
-// was faster on one (37.4 s against 45.2 s).
-constexpr int kSerialBelowEdges = 1000;
+// Each hole is restored with OpenMP's regions on one thread (SerialRegions). Its flow, remeshing
+// and measures are many parallel regions of little work each, and libgomp's threads spin between
+// them: on the 2-core machine with other jobs running (load 4-6), the bunny's 408-edge hole
+// (refined once, a 5,800-vertex patch) took 2.5 s on two threads and 0.9 s on one (the same with
+// OMP_WAIT_POLICY=passive), and the armadillo's 1,978-edge hole (a 184,000-vertex patch) 45.2 s
+// against 37.4 s, and 32.9 s against 24.9 s in restoration_sweep (CGAL 5.5 and 5.7 s). On an idle
+// machine two threads had shortened that hole's remeshing (5.7 → 4.5 s). The patches are also the
+// same on any number of cores (parallel sums group their terms by thread).
 
 // The remeshing of a patch about to be flowed, toward `lengthScale` times the border's edge
 // lengths: half the rounds of a full one, since patch_angles and the flow's flips finish the job
@@ -548,7 +548,7 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
       const std::unordered_set<int> onLoop(loop.vertices.begin(), loop.vertices.end());
       for (int i = 0; i < subVertices; ++i)
         if (onLoop.count(sub.vertex[i])) sigma[i] = border.at(sub.vertex[i]).edgeLength;
-      const SerialRegions serial(loop.edgeCount() < kSerialBelowEdges);
+      const SerialRegions serial;
       restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)),
                    hole);
       flowSteps += hole.steps;
