@@ -4,6 +4,7 @@
 // mesh's own memory.
 //
 //   scan_holes_bench MESH [--subdivide L] [--holes N] [--edges MIN,MAX] [--name NAME] [--write OUT.bin]
+//                    [--write-holed HOLED.ply]
 //   scan_holes_bench --header          the table's header (two lines)
 //
 // Prints one Markdown table row: vertices of the holed scan, holes found and filled, their border
@@ -11,7 +12,8 @@
 // whole-mesh passes), milliseconds per thousand new vertices (and a least-squares line over the
 // holes), the mesh's bytes, the fill's peak resident memory above the mesh, that peak (mesh
 // included) over the input's and over the output's bytes, and the border edges left open.
-// --write keeps the filled mesh (raw: counts, then positions and faces as in memory).
+// --write keeps the filled mesh (raw: counts, then positions and faces as in memory); --write-holed
+// the holed scan as binary PLY (to time `elastica fill` on it with /usr/bin/time -v).
 //
 // The fill runs in a child process (this program again, `--fill FILE`) that holds nothing but the
 // holed mesh: the cutter's own arrays would otherwise stay in the allocator's heap and hide what
@@ -22,6 +24,7 @@
 
 #include <elastica/hole_filling.h>
 #include <elastica/io/mesh_reader.h>
+#include <elastica/io/mesh_writer.h>
 #include <elastica/subdivision.h>
 #include <elastica/topology.h>
 #include <elastica/vcg_adapter.h>
@@ -274,11 +277,11 @@ static int run(int argc, char** argv) {
     return 0;
   }
   if (argc < 2) {
-    std::fprintf(stderr, "usage: %s MESH [--subdivide L] [--holes N] [--edges MIN,MAX] [--name NAME] [--write OUT.bin]\n", argv[0]);
+    std::fprintf(stderr, "usage: %s MESH [--subdivide L] [--holes N] [--edges MIN,MAX] [--name NAME] [--write OUT.bin] [--write-holed HOLED.ply]\n", argv[0]);
     return 2;
   }
   int subdivide = 0, holes = 200, minEdges = 10, maxEdges = 300;
-  std::string name = argv[1], writePath;
+  std::string name = argv[1], writePath, holedPly;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--subdivide" && i + 1 < argc) {
@@ -291,6 +294,8 @@ static int run(int argc, char** argv) {
       name = argv[++i];
     } else if (a == "--write" && i + 1 < argc) {
       writePath = argv[++i];
+    } else if (a == "--write-holed" && i + 1 < argc) {
+      holedPly = argv[++i];
     } else {
       std::fprintf(stderr, "scan_holes_bench: unknown or incomplete argument %s\n", a.c_str());
       return 2;
@@ -330,6 +335,7 @@ static int run(int argc, char** argv) {
     holed.faces.shrink_to_fit();
     holedPath = "/tmp/scan_holes_bench_" + std::to_string(getpid()) + ".bin";
     writeRaw(holedPath, holed);
+    if (!holedPly.empty()) io::writePly(holedPly, holed, {}, /*binary=*/true);
   }
   // The fill, alone in a fresh process.
   std::string command = "'" + std::string(argv[0]) + "' --fill " + holedPath;

@@ -248,7 +248,7 @@ py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges,
   if (maxSteps) checkArgument(app::FilterId::FillHoles, "maxSteps", "max_steps", double(*maxSteps));
   checkArgument(app::FilterId::FillHoles, "maxSeconds", "max_seconds", maxSeconds);
   TriMesh mesh = toMesh(V, F);
-  app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
+  app::checkFillInput(mesh, app::RepairHints::None);
   HoleFillOptions opt;
   opt.maxHoleEdges = maxHoleEdges;
   opt.closeRims = closeRims;

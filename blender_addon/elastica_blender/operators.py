@@ -4,8 +4,9 @@ filters' parameters with their defaults, labels and ranges, so the add-on holds 
 Run from the menu or F3 (invoke), fairing and filling compute in a worker thread while Blender stays
 responsive: the status bar shows the step and energy, Esc cancels (the module's progress callback
 returns False) and leaves the mesh as it was. The time limit ("Time limit (s)", 60 s by default as in
-MeshLab) stops a long run, which then keeps what it reached, as MeshLab's filters do. From the redo
-panel or a script (execute) they run to the end in the foreground.
+MeshLab) stops a long fair and leaves the mesh as it was too (a Blender operator finishes or changes
+nothing; raise the limit, or 0 for none); a fill stopped by it keeps the patches it made. From the
+redo panel or a script (execute) they run to the end in the foreground.
 
 Edit Mode: the operator leaves Edit Mode once at its start and enters it again once at its end (a
 mode switch syncs the edit mesh; nothing toggles per step). Undo restores the mesh (REGISTER, UNDO).
@@ -298,6 +299,9 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
 
     def apply(self, context, me, result):
         V, F, report = result
+        if report["stop"] == "max_seconds":
+            return (f"Elastica: stopped at the time limit after {report['seconds']:.2f} s, before the flow "
+                    "finished; the mesh is unchanged (raise Time limit (s), or 0 for none)")
         keep, arrays = self._keep, self._arrays
         if keep:
             ma.write_positions(me, V)
@@ -306,10 +310,9 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
         if self.color_by_mean_curvature:
             measure_curvature(me, V, F)
         moved = len(V) if not keep else int((V != arrays.V).any(axis=1).sum())
-        limit = " (stopped at the time limit)" if report["stop"] == "max_seconds" else ""
         return (f"Elastica: {moved} of {len(V)} vertices moved; E {report['energy_initial']:.6g} -> "
                 f"{report['energy_final']:.6g} in {report['steps']} steps ({report['stop']}), "
-                f"{report['seconds']:.2f} s{limit}")
+                f"{report['seconds']:.2f} s")
 
 
 class MESH_OT_elastica_fill_holes_base(ElasticaOperator):

@@ -158,4 +158,16 @@ struct HoleFillReport {
 /// @throws InvalidInputError on non-manifold edges or invalid options; the mesh is then unchanged.
 HoleFillReport fillHoles(TriMesh& mesh, const HoleFillOptions& opt = {});
 
+/// What fillHoles accepts in a mesh but a caller may refuse before filling it.
+struct FillInputDefects {
+  int inconsistentEdges = 0;    ///< edges run the same way by both their faces (as Topology counts them)
+  int nonManifoldVertices = 0;  ///< vertices where several fans of faces meet (as Topology counts them)
+};
+
+/// Counts them with a vertex→faces index (a third of the mesh's bytes) instead of a whole-mesh
+/// Topology (several times the mesh): the check every face runs before fillHoles.
+/// @throws InvalidInputError as fillHoles does: a face index out of range, a face that repeats a
+///         vertex, an edge shared by more than two faces.
+FillInputDefects countFillInputDefects(const TriMesh& mesh);
+
 }  // namespace elastica

@@ -19,6 +19,11 @@ class Topology {
   ///         shared by more than two faces (non-manifold edge). The message names the face/edge.
   Topology(int vertexCount, const std::vector<Face>& faces);
 
+  /// The most vertices of any Topology built in this process since the last reset: tests check
+  /// with it that a path works on pieces of a mesh and never builds the whole mesh's.
+  static int largestBuilt();
+  static void resetLargestBuilt();
+
   int vertexCount() const { return nv_; }
   int faceCount() const { return static_cast<int>(faces_.size()); }
   int edgeCount() const { return static_cast<int>(edgeVertices_.size()); }

@@ -3,6 +3,9 @@
 #include <elastica/sign_convention.h>
 #include <elastica/topology.h>
 
+#include <algorithm>
+#include <cstdint>
+
 namespace elastica {
 
 MeshCurvature measureCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt) {
@@ -24,6 +27,76 @@ MeshCurvature measureCurvature(const TriMesh& mesh, const CurvatureMeasureOption
   out.degenerate = geo.degenerate;
   out.eulerCharacteristic = topo.eulerCharacteristic();
   out.boundaryEdges = static_cast<std::size_t>(topo.boundaryEdgeCount());
+  return out;
+}
+
+}  // namespace elastica
+
+namespace elastica {
+
+MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasureOptions& opt, int pieceVertices) {
+  const int nv = mesh.vertexCount();
+  if (opt.curvature.h2k == H2KTreatment::PaperLambda || nv <= pieceVertices) return measureCurvature(mesh, opt);
+  MeshCurvature out;
+  out.H.assign(nv, 0.0);
+  out.K.assign(nv, 0.0);
+  std::vector<std::uint8_t> used(nv, 0);
+  for (const Face& t : mesh.faces)
+    for (int v : t) {
+      if (v < 0 || v >= nv) return measureCurvature(mesh, opt);  // let it throw its message
+      used[v] = 1;
+    }
+  long long edges = 0;
+  std::vector<int> local(nv, -1);  // a piece's vertex number, -1 outside it
+  std::vector<int> global;
+  TriMesh piece;
+  std::vector<std::uint8_t> own;
+  for (int first = 0; first < nv; first += pieceVertices) {
+    const int last = std::min(nv, first + pieceVertices);  // the piece's own vertices: [first, last)
+    auto owned = [&](int v) { return v >= first && v < last; };
+    // The faces at its own vertices, in the mesh's order, on their vertices numbered in the mesh's
+    // order: each own vertex has its whole fan, listed as a whole-mesh Topology lists it.
+    piece.faces.clear();
+    global.clear();
+    for (const Face& t : mesh.faces) {
+      if (!owned(t[0]) && !owned(t[1]) && !owned(t[2])) continue;
+      piece.faces.push_back(t);
+      for (int v : t)
+        if (local[v] < 0) {
+          local[v] = 0;
+          global.push_back(v);
+        }
+    }
+    std::sort(global.begin(), global.end());
+    for (std::size_t i = 0; i < global.size(); ++i) local[global[i]] = static_cast<int>(i);
+    piece.positions.resize(global.size());
+    for (std::size_t i = 0; i < global.size(); ++i) piece.positions[i] = mesh.positions[global[i]];
+    for (Face& t : piece.faces)
+      for (int& v : t) v = local[v];
+    own.assign(global.size(), 0);
+    for (std::size_t i = 0; i < global.size(); ++i) own[i] = owned(global[i]);
+
+    const Topology topo(piece.vertexCount(), piece.faces);
+    const Geometry geo = computeGeometry(topo, piece.positions, opt.area);
+    const Curvature c = computeCurvature(topo, geo, piece.positions, opt.curvature);
+    out.energy += totalCurvatureEnergy(topo, geo, c, &own);
+    for (std::size_t i = 0; i < global.size(); ++i) {
+      if (!own[i]) continue;
+      out.H[global[i]] = reportedMeanCurvature(c.H[i]);
+      out.K[global[i]] = c.K[i];
+      if (!geo.isRegular(static_cast<int>(i))) ++out.degenerate.zeroAreaVertices;
+    }
+    // Each edge once: in the piece of its smaller end.
+    for (int e = 0; e < topo.edgeCount(); ++e) {
+      const auto& ev = topo.edgeVertices(e);
+      if (!owned(std::min(global[ev[0]], global[ev[1]]))) continue;
+      ++edges;
+      out.boundaryEdges += topo.isBoundaryEdge(e);
+    }
+    for (int v : global) local[v] = -1;
+  }
+  for (int v = 0; v < nv; ++v) out.degenerate.isolatedVertices += !used[v];
+  out.eulerCharacteristic = static_cast<int>(nv - edges + mesh.faceCount());
   return out;
 }
 

@@ -2,6 +2,7 @@
 #include <elastica/topology.h>
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <string>
 
@@ -38,6 +39,13 @@ int findRoot(std::vector<int>& parent, int i) {
 
 }  // namespace
 
+namespace {
+std::atomic<int> largestTopology{0};
+}  // namespace
+
+int Topology::largestBuilt() { return largestTopology.load(); }
+void Topology::resetLargestBuilt() { largestTopology.store(0); }
+
 // Linear in the mesh size apart from sorting each vertex's handful of spokes: the corner lists
 // are a counting sort, the edges come vertex by vertex from them, and the one-rings are a counting
 // sort of the edges. It runs at every connectivity change (each edge-flip pass, each hole patch,
@@ -45,6 +53,8 @@ int findRoot(std::vector<int>& parent, int i) {
 // faults cost more than the work.
 Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertexCount), faces_(faces) {
   if (vertexCount < 0) throw InvalidInputError("Topology: negative vertex count");
+  for (int seen = largestTopology.load(); seen < vertexCount && !largestTopology.compare_exchange_weak(seen, vertexCount);) {
+  }
   const int nf = static_cast<int>(faces.size());
   for (int f = 0; f < nf; ++f) {
     const Face& t = faces[f];

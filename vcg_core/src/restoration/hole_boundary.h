@@ -6,6 +6,7 @@
 #include "restoration/submesh.h"
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace elastica {
@@ -69,7 +70,9 @@ double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v);
 /// b and theta: 11.7° for a 39° corner between edges of 1 and 3.8), split it between two faces
 /// sharing an apex (the best apex, searched), or split it among three or more (theta/3 at most).
 /// At most theta; theta itself for a corner below 60° between edges of equal length.
-double cornerBound(double a, double b, double theta);
+/// `enough`: the search ends as soon as the bound is known to be at least this, and returns a
+/// value at least this (for a minimum over corners: a corner that cannot lower it).
+double cornerBound(double a, double b, double theta, double enough = std::numeric_limits<double>::infinity());
 
 /// The smallest angle any patch of `loop` can have, in degrees, as far as its border decides: the
 /// smallest cornerBound() over the corners that the hole's side sees as convex (the mesh's own

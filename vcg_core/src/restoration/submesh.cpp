@@ -19,6 +19,36 @@ VertexFaces vertexFaces(const TriMesh& mesh) {
   return vf;
 }
 
+int fansAt(const TriMesh& mesh, const int* faces, std::size_t count, int v, std::vector<int>& fan,
+           std::vector<std::pair<int, int>>& spokes) {
+  const int n = static_cast<int>(count);
+  // Union-find over the faces in `fan` (parents first, fan numbers last): two faces that hold the
+  // same spoke (edge at v) are one fan.
+  fan.resize(n);
+  std::iota(fan.begin(), fan.end(), 0);
+  auto root = [&](int i) {
+    while (fan[i] != i) i = fan[i] = fan[fan[i]];
+    return i;
+  };
+  spokes.clear();
+  for (int i = 0; i < n; ++i)
+    for (int x : mesh.faces[faces[i]])
+      if (x != v) spokes.emplace_back(x, i);
+  std::sort(spokes.begin(), spokes.end());
+  for (std::size_t k = 1; k < spokes.size(); ++k) {
+    if (spokes[k].first != spokes[k - 1].first) continue;
+    const int a = root(spokes[k].second), b = root(spokes[k - 1].second);
+    if (a != b) fan[std::max(a, b)] = std::min(a, b);  // a fan's root is its first face
+  }
+  for (int i = 0; i < n; ++i) fan[i] = root(i);
+  // Numbered in order: a fan's root comes before its members, so it is numbered first (negative
+  // while numbering, -1 - number, to tell numbers from roots).
+  int fans = 0;
+  for (int i = 0; i < n; ++i) fan[i] = fan[i] == i ? -1 - fans++ : fan[fan[i]];
+  for (int& x : fan) x = -1 - x;
+  return fans;
+}
+
 VertexFaceIndex::VertexFaceIndex(const TriMesh& mesh) : offset_(mesh.positions.size() + 1, 0), face_(3 * mesh.faces.size()) {
   for (const Face& t : mesh.faces)
     for (int v : t) ++offset_[v + 1];

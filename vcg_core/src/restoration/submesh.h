@@ -4,7 +4,9 @@
 
 #include <elastica/types.h>
 
+#include <cstddef>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace elastica {
@@ -62,6 +64,13 @@ class VertexFaceIndex {
   std::unordered_map<int, std::vector<int>> edited_;  // base vertices whose faces changed
   std::vector<std::vector<int>> appended_;            // vertices from baseVertices() on
 };
+
+/// Groups `faces` (the faces around vertex `v`) into fans, faces joined across an edge at v: sets
+/// fan[i] to the fan of faces[i], fans numbered in order of their first face in `faces`, and
+/// returns how many there are (more than one: a bow-tie vertex). `spokes` is scratch, reused
+/// between calls so that a pass over every vertex allocates nothing per vertex.
+int fansAt(const TriMesh& mesh, const int* faces, std::size_t count, int v, std::vector<int>& fan,
+           std::vector<std::pair<int, int>>& spokes);
 
 struct Submesh {
   TriMesh mesh;

@@ -59,6 +59,30 @@ Acc parallelReduce(int n, const Acc& init, const Body& body, const Join& join) {
   return acc;
 }
 
+/// While one is alive (and `on`), every parallel region runs on the calling thread alone; the
+/// setting is put back after. For work made of many small regions on a shared machine: libgomp's
+/// idle threads spin between regions, and on a 2-core machine with other jobs running a hole's
+/// fill took 2.7 times as long with its regions on two threads as on one.
+class SerialRegions {
+ public:
+#ifdef _OPENMP
+  explicit SerialRegions(bool on = true) : on_(on), levels_(omp_get_max_active_levels()) {
+    if (on_) omp_set_max_active_levels(0);
+  }
+  ~SerialRegions() {
+    if (on_) omp_set_max_active_levels(levels_);
+  }
+  SerialRegions(const SerialRegions&) = delete;
+  SerialRegions& operator=(const SerialRegions&) = delete;
+
+ private:
+  bool on_;
+  int levels_;
+#else
+  explicit SerialRegions(bool = true) {}
+#endif
+};
+
 /// Σ body(i) over [0, n).
 template <class Body>
 double parallelSum(int n, const Body& body) {

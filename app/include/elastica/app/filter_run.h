@@ -37,6 +37,11 @@ enum class RepairHints { None, MeshLab };
 ///         in MeshLab).
 Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices, RepairHints hints);
 
+/// Rejects what checkedTopology rejects with rejectNonManifoldVertices, for a mesh about to be
+/// filled: counted with a vertex→faces index (countFillInputDefects), never a whole-mesh Topology.
+/// @throws InvalidInputError as checkedTopology.
+void checkFillInput(const TriMesh& mesh, RepairHints hints);
+
 /// What a filter leaves on the mesh besides positions and faces (for the data MeshLab must keep,
 /// and what `elastica run` writes).
 struct FilterOutputs {
