@@ -193,8 +193,11 @@ void writeObj(Output& out, const TriMesh& mesh) {
 // float32, as the format has them.
 void writeStl(Output& out, const TriMesh& mesh, bool binary) {
   if (binary) {
+    // Padded with NULs, not spaces: vcglib's STL importer (MeshLab 2020.09's) reads the label as
+    // a C string, and a label without a NUL makes it read past its 80-byte buffer (AddressSanitizer
+    // in io_tests).
     std::string label = "elastica binary STL";
-    label.resize(80, ' ');
+    label.resize(80, '\0');
     out.raw(label);
     out.binary(static_cast<std::uint32_t>(mesh.faces.size()));
   } else {
