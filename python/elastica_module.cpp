@@ -214,6 +214,10 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   checkArgument(FilterId::Fairing, "maxSteps", "max_steps", double(maxSteps));
   checkArgument(FilterId::Fairing, "maxSeconds", "max_seconds", maxSeconds);
   if (energyTol) checkArgument(FilterId::Fairing, "energyTolerance", "energy_tol", *energyTol);
+  // The MeshLab parameter is a length (its range has no upper end); here it is a fraction.
+  if (!(featureSize >= 0 && featureSize <= 1))
+    throw InvalidInputError("feature_size must be in 0..1 (a fraction of the bounding-box diagonal), not " +
+                            std::to_string(featureSize));
   TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
   std::vector<std::uint8_t> selection = selectionFrom(selectedFaces, mesh.faceCount());
@@ -223,8 +227,6 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   opt.subdivisionLevels = subdivide;
   opt.maxSteps = app::stepLimit(maxSteps);
   opt.maxSeconds = maxSeconds;
-  if (!(featureSize >= 0 && featureSize <= 1))
-    throw InvalidInputError("feature_size must be in 0..1 (a fraction of the bounding-box diagonal)");
   opt.featureSize = featureSize * boundingBoxDiagonal(mesh.positions);
   if (energyTol) opt.energyTolerance = *energyTol;
   opt.tangentialDrift = tangential;
