@@ -4,6 +4,7 @@
 #include <elastica/hole_filling.h>
 #include <elastica/types.h>
 
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <random>
@@ -27,6 +28,30 @@ inline TriMesh scaled(TriMesh m, double s) {
 /// Reverses the orientation of every face.
 inline TriMesh flipped(TriMesh m) {
   for (Face& f : m.faces) std::swap(f[1], f[2]);
+  return m;
+}
+
+/// A unit UV sphere (latitude-longitude): `segments` meridians, `rings` bands from pole to pole,
+/// a vertex of valence `segments` at each pole. Its polar triangles are needles of angle
+/// 360°/segments: the irregular mesh a modelling program makes, not an icosphere.
+inline TriMesh uvSphere(int segments, int rings) {
+  TriMesh m;
+  m.positions.emplace_back(0, 0, 1);
+  for (int i = 1; i < rings; ++i)
+    for (int j = 0; j < segments; ++j) {
+      const double theta = M_PI * i / rings, phi = 2 * M_PI * j / segments;
+      m.positions.emplace_back(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    }
+  m.positions.emplace_back(0, 0, -1);
+  const int south = static_cast<int>(m.positions.size()) - 1;
+  auto at = [&](int i, int j) { return 1 + (i - 1) * segments + (j % segments); };
+  for (int j = 0; j < segments; ++j) m.faces.push_back({0, at(1, j), at(1, j + 1)});
+  for (int i = 1; i < rings - 1; ++i)
+    for (int j = 0; j < segments; ++j) {
+      m.faces.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.faces.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  for (int j = 0; j < segments; ++j) m.faces.push_back({south, at(rings - 1, j + 1), at(rings - 1, j)});
   return m;
 }
 

@@ -224,6 +224,9 @@ struct FlowReport {
   /// FlowOptions::remesh: subdivisions made before the first flow (the working-resolution floor),
   /// isotropic remeshings of the moving region, and steps rejected because faces would cross.
   int preSubdivisions = 0, remeshings = 0;
+  /// Tangential relaxation passes that untangled a jittered moving region before the vector
+  /// scheme's flow (0: the region was not tangled, or a remeshing resampled it).
+  int untanglePasses = 0;
   long long crossingRejections = 0;
   /// The input's faces already crossed: the embedding guard was off (nothing to keep).
   bool inputSelfIntersects = false;

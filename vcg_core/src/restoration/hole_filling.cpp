@@ -13,7 +13,7 @@
 #include "restoration/patch_remeshing.h"
 #include "restoration/rim_rule.h"
 #include "restoration/submesh.h"
-#include "restoration/tangential_relaxation.h"
+#include "mesh/tangential_relaxation.h"
 #include "support/parallel.h"
 
 #include <algorithm>
