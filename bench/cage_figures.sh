@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # "Cages from elsewhere": the hand-written polygon cages of data/cages/ (none made by
-# `elastica generate`) faired by the default pipeline (`elastica fair CAGE --subdivide 3`: the
-# semi-implicit scheme with the working-resolution floor, remeshing, flips and the embedding
-# guard), rendered coloured by mean curvature beside the cage, with a table of genus, energy,
+# `elastica generate`) faired by the default pipeline (`elastica fair CAGE --subdivide 3`: auto's
+# scheme with the working-resolution floor, remeshing, flips and the embedding guard), rendered coloured by mean curvature beside the cage, with a table of genus, energy,
 # self-intersecting faces (vcglib's test, bench/mesh_check), smallest angle, steps and time.
 # Writes the section between the <!-- cage-figures:begin --> and <!-- cage-figures:end -->
 # markers at the end of docs/figures.md (bench/paper_figures.sh keeps it) and docs/figures/cage_*.png.
@@ -47,6 +46,7 @@ cages=(
   "genus-3 blocks|genus3_blocks.off|below 4·8π + 16π = 150.8"
   "CAD rod, slivers|cad_rod_slivers.off|round sphere: 8π = 25.1"
   "hex nut|hex_nut.off|Clifford torus: 8π² = 79.0"
+  "thin ring|thin_ring_24x4.off|Clifford torus: 8π² = 79.0"
 )
 rows=() pictures=()
 for entry in "${cages[@]}"; do
@@ -66,7 +66,7 @@ for entry in "${cages[@]}"; do
   seconds=$(( (end - start) / 100000000 ))  # tenths
   rows+=("$(jq -r -s --arg title "$title" --arg ref "$reference" --arg s "$((seconds / 10)).$((seconds % 10))" '
     .[0] as $in | .[1] as $out | .[2] as $r |
-    "| \($title) | \($in.vertices) → \($out.vertices) | \($in.genus) → \($out.genus) | \($out.energy * 100 | round / 100) | \($ref) | \($out.self_intersecting_faces) | \($in.min_angle_deg * 10 | round / 10)° → \($out.min_angle_deg * 10 | round / 10)° | \($r.steps) | \($s) |"' \
+    "| \($title) | \($in.vertices) → \($out.vertices) | \($in.genus) → \($out.genus) | \($out.energy * 100 | round / 100) | \($ref) | \($out.self_intersecting_faces) | \($in.min_angle_deg * 10 | round / 10)° → \($out.min_angle_deg * 10 | round / 10)° | \($r.scheme) | \($r.stop) | \($r.steps) | \($s) |"' \
     "$work/${stem}_in.json" "$work/${stem}_out.json" "$work/${stem}.json")")
   pictures+=("**${title}** (\`data/cages/${file}\`): the cage as read (its polygons split along a diagonal), then the faired surface coloured by mean curvature.
 
@@ -81,8 +81,9 @@ section=$(cat <<END_OF_SECTION
 Made by \`$command_line\` (it writes this section and \`docs/figures/cage_*.png\`; every number is
 read from that run). Each cage in \`data/cages/\` (written by hand, not by \`elastica generate\`; see
 data/README.md) is faired by \`elastica fair CAGE -o OUT --subdivide $levels\`: the default
-semi-implicit scheme with the working-resolution floor, isotropic and curvature-adaptive remeshing,
-Delaunay flips and the embedding guard (docs/cli.md, "The default"). Genus, energy (mixed areas),
+(\`--scheme auto\`: the vector scheme, or the semi-implicit one below 1,500 vertices per handle)
+with the working-resolution floor (100 vertices plus 1,000 per handle before the first flow), isotropic and
+curvature-adaptive remeshing, Delaunay flips and the embedding guard (docs/cli.md, "The default"). Genus, energy (mixed areas),
 faces crossing another face (vcglib's \`Clean::SelfIntersections\`, an implementation independent
 of the flow's guard) and smallest angles are measured afresh from the written files by
 \`bench/mesh_check\`; steps (attempts) come from the run's report, seconds are the command's wall
@@ -94,8 +95,8 @@ E 436 with 100) and the rod kept slivers of 1.2°. Colours span each mesh's own 
 on a surface of nearly constant H (the sphere) they show its last fractions of a percent, at
 irregular vertices.
 
-| cage | vertices | genus | E | continuum | crossing faces | smallest angle | steps | seconds |
-|---|---|---|---|---|---|---|---|---|
+| cage | vertices | genus | E | continuum | crossing faces | smallest angle | scheme | stop | steps | seconds |
+|---|---|---|---|---|---|---|---|---|---|---|
 $(printf '%s\n' "${rows[@]}")
 
 $(printf '%s\n' "${pictures[@]}")

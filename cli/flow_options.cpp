@@ -28,7 +28,7 @@ void addFlowOptions(CLI::App& cmd, FlowOptions& opt) {
                  "elastica (default: F = -Lap H - 2H(H^2-K)), lmc (F = -Lap H) or bilaplacian (P -= tau U0^2 P)")
       ->transform(CLI::CheckedTransformer(app::nameMap<FlowType>(), CLI::ignore_case));
   cmd.add_option("--scheme", opt.scheme,
-                 "auto (fair's default: vector, or semi-implicit on meshes with handles and under 1000 vertices per "
+                 "auto (fair's default: vector, or semi-implicit on meshes with handles and under 1500 vertices per "
                  "handle), vector (implicit in the positions, adaptive steps that move vertices tangentially too, with "
                  "remeshing), semi-implicit (fill's default: implicit in the 4th-order part, normal moves) or explicit "
                  "(the paper's step; the bilaplacian flow's only scheme)")

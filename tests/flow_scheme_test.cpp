@@ -66,9 +66,11 @@ TEST_P(FlowScheme, RoundSphereStaysRound) {
   for (const Vec3& p : m.positions) EXPECT_NEAR(p.norm(), 1.0, 1e-3);
 }
 
-// 5 % radial noise on a 162-vertex icosphere, faired coarse to fine (one subdivision, 642
-// vertices): round (SchemeCase::noisySphereSpread) and E within 2 % of 8π (the 642-vertex
-// discretisation itself is 0.95 % below 8π); the report's final E is the mesh's E.
+// 5 % radial noise on a 162-vertex icosphere, faired with one subdivision (642 vertices): round
+// (SchemeCase::noisySphereSpread) and E within 2 % of 8π (the 642-vertex discretisation itself is
+// 0.95 % below 8π); the report's final E is the mesh's E. The explicit scheme flows coarse to fine
+// (two stages); the semi-implicit pipeline spends the level before its first flow (its
+// working-resolution floor is 1,000 vertices), so one stage after one pre-subdivision.
 TEST_P(FlowScheme, NoisySphereBecomesRound) {
   TriMesh m = radialNoise(shapes::icosphere(1.0, 2), 0.05, 1);
   ASSERT_GT(radii(m).spread(), 0.08);
@@ -77,8 +79,9 @@ TEST_P(FlowScheme, NoisySphereBecomesRound) {
   const FlowReport r = fair(m, opt);
   EXPECT_EQ(r.stop, StopReason::Converged);
   EXPECT_LT(r.steps, GetParam().noisySphereSteps);
-  ASSERT_EQ(r.stages.size(), 2u);
-  EXPECT_EQ(m.vertexCount(), 642);
+  ASSERT_EQ(r.stages.size() + r.preSubdivisions, 2u);
+  // The isotropic remeshing before the first flow keeps the count within a few % (measured 619).
+  EXPECT_NEAR(m.vertexCount(), 642, 0.05 * 642);
   EXPECT_LT(radii(m).spread(), GetParam().noisySphereSpread);
   EXPECT_NEAR(energyOf(m), 8 * M_PI, 0.02 * 8 * M_PI);
   EXPECT_NEAR(r.energyFinal, energyOf(m), 1e-9 * energyOf(m));

@@ -44,12 +44,17 @@ enum class Scheme {
   /// the vector scheme's tangential freedom finds discrete states below the continuum's minimum
   /// (a genus-2 cage at 1,213 vertices: E 104.6 where the genus-2 minimiser has 112.8; a tube
   /// torus at 494 vertices: E 57.7 where no torus goes below 8π² ≈ 79), which it does not at
-  /// 6,577 and 15,536 vertices (112.83, 78.93). FlowReport::scheme says which ran.
+  /// 6,577 and 15,536 vertices (112.83, 78.93). At 1,000 vertices per handle it still stalled on
+  /// the genus-2 and genus-3 block cages (--subdivide 3: 3,034 and 4,088 vertices, 594 and 2,622
+  /// attempts, 20 and 94 s), where the semi-implicit scheme converged at E 112.78 and 143.04 in
+  /// 622 and 801 attempts; a thin ring at 3,072 per handle converges (E 78.85), knot1 at 1,600
+  /// stops at its self-contact (the semi-implicit scheme stalls there). FlowReport::scheme says
+  /// which ran.
   Automatic,
 };
 
 /// Scheme::Automatic's threshold (see there).
-inline constexpr int kVectorVerticesPerHandle = 1000;
+inline constexpr int kVectorVerticesPerHandle = 1500;
 
 /// How vertices on the mesh boundary behave.
 enum class BoundaryMode {
@@ -110,7 +115,7 @@ struct FlowOptions {
 
   /// Semi-implicit scheme: mesh quality as stages of the pipeline (the paper's future work,
   /// dynamic connectivity). Before the first flow, the mesh is subdivided (within
-  /// subdivisionLevels) until at least 100·(genus + 1) vertices move; before the first stage, the
+  /// subdivisionLevels) until at least 100 + 1,000·genus vertices move; before the first stage, the
   /// faces whose vertices all move are remeshed isotropically (split, collapse, flip, relax; the
   /// vertex count stays about the same); after a stage that left an angle below 20° or a vertex
   /// whose curvature κ and edge length ℓ have κℓ > 0.6 (a neck the energy cannot see), they are

@@ -15,7 +15,9 @@
 namespace elastica {
 namespace {
 
-constexpr int kVerticesPerHandle = 100;
+// workingResolutionFloor(): free vertices per handle, and without handles (see the header).
+constexpr int kFloorVerticesPerHandle = 1000, kFloorVertices = 100;
+
 // Curvature-adaptive remeshing aims at κ·ℓ = 0.4, below the 0.6 above which the discrete energy
 // of a cage's flow was seen to fall below the continuum's (docs/figures.md), and refines at most
 // 8× below the region's mean edge length.
@@ -45,7 +47,7 @@ int closedGenus(const TriMesh& mesh) {
   return std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
 }
 
-int workingResolutionFloor(const TriMesh& mesh) { return kVerticesPerHandle * (closedGenus(mesh) + 1); }
+int workingResolutionFloor(const TriMesh& mesh) { return kFloorVertices + kFloorVerticesPerHandle * closedGenus(mesh); }
 
 void subdivideOneLevel(TriMesh& mesh, std::vector<std::uint8_t>& selection) {
   if (selection.empty())
