@@ -364,9 +364,11 @@ const char* option(int argc, char** argv, const char* name, const char* fallback
 }  // namespace
 
 // ---------------------------------------------------------------- resolution
-// The default pipeline (semi-implicit with remeshing) against the paper's explicit scheme on tori
-// R/r = 3 at several resolutions: steps to the plateau, wall time, R/r (least-squares fit of a
-// torus of revolution about z) and E. The explicit runs stop at the plateau or `explicitSeconds`.
+// The default pipeline (Scheme::Automatic with remeshing: the vector scheme, or the semi-implicit
+// one on handles under kVectorVerticesPerHandle vertices), the semi-implicit pipeline and the
+// paper's explicit scheme on tori R/r = 3 at several resolutions: steps to the stop, wall time, R/r
+// (least-squares fit of a torus of revolution about z) and E. The explicit runs stop at the
+// plateau or `explicitSeconds`.
 double fittedAspectRatio(const TriMesh& m) {
   double R = 0, r = 0;
   for (const Vec3& p : m.positions) R += std::hypot(p.x(), p.y()) / m.vertexCount();
@@ -390,16 +392,22 @@ int resolution(const std::vector<long>& segments, double explicitSeconds) {
   std::printf("|---|---:|---|---:|---|---:|---:|---:|\n");
   for (std::size_t k = 0; k + 1 < segments.size(); k += 2) {
     const TriMesh torus = shapes::torus(3, 1, static_cast<int>(segments[k]), static_cast<int>(segments[k + 1]));
-    for (const Scheme scheme : {Scheme::SemiImplicit, Scheme::Explicit}) {
+    for (const Scheme scheme : {Scheme::Automatic, Scheme::SemiImplicit, Scheme::Explicit}) {
       FlowOptions opt;
       opt.scheme = scheme;
       if (scheme == Scheme::Explicit) opt.maxSeconds = explicitSeconds;
       TriMesh m = torus;
       const FlowReport r = fair(m, opt);
+      const char* label = scheme == Scheme::Explicit       ? "explicit (paper)"
+                          : scheme == Scheme::SemiImplicit ? "semi-implicit, remeshing"
+                          : r.scheme == Scheme::Vector     ? "default (auto: vector)"
+                                                           : "default (auto: semi-implicit)";
+      const char* stop = r.stop == StopReason::Converged    ? "converged"
+                         : r.stop == StopReason::MaxSeconds ? "time limit"
+                         : r.stop == StopReason::Stalled    ? "stalled"
+                                                            : "other";
       std::printf("| %ld×%ld | %d | %s | %lld | %s | %.1f | %.3f | %.2f |\n", segments[k], segments[k + 1],
-                  torus.vertexCount(), scheme == Scheme::Explicit ? "explicit (paper)" : "semi-implicit, remeshing (default)",
-                  r.steps, r.stop == StopReason::Converged ? "converged" : r.stop == StopReason::MaxSeconds ? "time limit" : "other",
-                  r.seconds, fittedAspectRatio(m), r.energyFinal);
+                  torus.vertexCount(), label, r.steps, stop, r.seconds, fittedAspectRatio(m), r.energyFinal);
       std::fflush(stdout);
     }
   }

@@ -72,7 +72,7 @@ if ((page)); then
 Whole closed scans from Debian's libcgal-demo, each faired by `elastica fair` with the
 semi-implicit scheme (the default until issue 28) and with `auto`, today's default (the vector
 scheme, or the semi-implicit one on meshes with handles and under 1,500 vertices per handle: the
-elephant, the elk). Attempts count refused steps too; E is the total curvature energy (a round
+elephant, the elk, the femur). Attempts count refused steps too; E is the total curvature energy (a round
 sphere: 8π ≈ 25.13); *crossing faces* is vcglib's self-intersection test on the output (the cow's
 input already has 137); *spread* is (max − min)/r of the vertices' distances to the least-squares
 sphere. Stops: `converged` (the shape stopped changing at the flow's time scale), `self_contact`

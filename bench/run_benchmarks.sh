@@ -66,6 +66,7 @@ dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v -e '^?? ' -e 'do
 # The real-shape and denoising sections have their own, slower runs (bench/real_shapes.sh --page,
 # bench/denoise.sh): kept as they were.
 real_shapes=$(sed -n '/^<!-- real-shapes/,/^<!-- \/real-shapes -->/p' "$page" 2>/dev/null || true)
+real_shapes_notes=$(sed -n '/^<!-- real-shapes-notes/,/^<!-- \/real-shapes-notes -->/p' "$page" 2>/dev/null || true)
 denoising=$(sed -n '/^<!-- denoise/,/^<!-- \/denoise -->/p' "$page" 2>/dev/null || true)
 {
   cat "$root/bench/benchmarks_header.md"
@@ -151,16 +152,18 @@ EOF
 ## 5. The default pipeline across resolutions
 
 \`fair\` on tori R/r = 3 (→ the Clifford torus, R/r = √2, E = 8π²) at several resolutions, every
-vertex free: the default (semi-implicit with the working-resolution floor, remeshing, flips and the
-embedding guard) against the paper's explicit scheme (stopped at its energy plateau or
-${explicit_seconds} s). Steps count attempts (rejected ones included) for the semi-implicit scheme;
-R/r is a least-squares fit of a torus of revolution, E the flow's own.
+vertex free: the default (\`--scheme auto\`: the vector scheme from 1,500 vertices per handle,
+the semi-implicit one below; remeshing, flips and the embedding guard), the semi-implicit pipeline
+and the paper's explicit scheme (stopped at its energy plateau or ${explicit_seconds} s). Steps count
+attempts (rejected ones included) for the adaptive schemes; R/r is a least-squares fit of a torus of
+revolution, E the flow's own.
 
 EOF
   cat "$tmp/resolution.md"
   cat "$root/bench/benchmarks_footer.md"
   if [[ -n $real_shapes ]]; then
     printf '\n## Real shapes: the default fair on libcgal-demo scans\n\n%s\n' "$real_shapes"
+    [[ -z $real_shapes_notes ]] || printf '\n%s\n' "$real_shapes_notes"
   fi
   if [[ -n $denoising ]]; then
     printf '\n## Denoising against MeshLab\n\n%s\n' "$denoising"
