@@ -75,8 +75,8 @@ io::MeshFile loadMesh(const std::string& path) {
   return file;
 }
 
-io::ReadReport loadMesh(const std::string& path, VcgMesh& m) {
-  const io::ReadReport r = io::readMesh(path, m);
+io::ReadReport loadMesh(const std::string& path, VcgMesh& m, double spare) {
+  const io::ReadReport r = io::readMesh(path, m, spare);
   noteRepairs(path, r);
   return r;
 }

@@ -15,8 +15,9 @@ namespace elastica::cli {
 /// triangulated polygons, removed faces, split vertices). @throws IoError.
 io::MeshFile loadMesh(const std::string& path);
 
-/// The same into a vcglib mesh, for the commands that work on one (`run`, `fill`). @throws IoError.
-io::ReadReport loadMesh(const std::string& path, VcgMesh& m);
+/// The same into a vcglib mesh, for the commands that work on one (`run`, `fill`), with room
+/// reserved for `spare` times as many elements more (io::readMesh). @throws IoError.
+io::ReadReport loadMesh(const std::string& path, VcgMesh& m, double spare = 0);
 
 /// The help of every command's -o and --ascii.
 inline constexpr const char* kOutputHelp = "output mesh; its extension chooses the format: .ply (every attribute), "

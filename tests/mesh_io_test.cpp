@@ -344,4 +344,26 @@ TEST(MeshIo, ReadsIntoTheCoreMeshWithTheSelection) {
   EXPECT_TRUE(back.faceSelection.empty());
 }
 
+// Read into a vcglib mesh with room to spare (what `elastica fill` does, so that its patches are
+// appended without moving the arrays): the mesh is the file's, and appending up to the spare keeps
+// every vertex and face where it was; without the spare, appending moves them.
+TEST(MeshIo, ReadsIntoAVcglibMeshWithRoomToSpare) {
+  ScratchDir dir("spare");
+  const TriMesh sphere = shapes::icosphere(1.0, 3);  // 642 vertices, 1,280 faces
+  io::writePly(dir.file("sphere.ply"), sphere, {}, true);
+  for (double spare : {0.0, 0.5}) {
+    VcgMesh m;
+    io::readMesh(dir.file("sphere.ply"), m, spare);
+    ASSERT_EQ(m.vert.size(), sphere.positions.size());
+    ASSERT_EQ(m.face.size(), sphere.faces.size());
+    EXPECT_EQ(toTriMesh(m).faces, sphere.faces);
+    const VcgVertex* vertices = m.vert.data();
+    const VcgFace* faces = m.face.data();
+    vcg::tri::Allocator<VcgMesh>::AddVertices(m, m.vert.size() / 2);
+    vcg::tri::Allocator<VcgMesh>::AddFaces(m, m.face.size() / 2);
+    EXPECT_EQ(m.vert.data() == vertices, spare > 0) << spare;
+    EXPECT_EQ(m.face.data() == faces, spare > 0) << spare;
+  }
+}
+
 }  // namespace elastica

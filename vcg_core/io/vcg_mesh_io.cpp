@@ -11,9 +11,13 @@ namespace elastica::io {
 
 static_assert(kPlyFaceSelected == VcgFace::SELECTED, "the PLY face flag for selection is vcglib's");
 
-ReadReport readMesh(const std::string& path, VcgMesh& m) {
+ReadReport readMesh(const std::string& path, VcgMesh& m, double spare) {
   m.Clear();
   const MeshFile file = readMesh(path);
+  if (spare > 0) {  // `m` is empty: no pointer into its arrays yet
+    m.vert.reserve(static_cast<size_t>(file.mesh.positions.size() * (1 + spare)));
+    m.face.reserve(static_cast<size_t>(file.mesh.faces.size() * (1 + spare)));
+  }
   fromTriMesh(file.mesh, m);
   for (size_t f = 0; f < file.faceSelection.size(); ++f)
     if (file.faceSelection[f]) m.face[f].SetS();

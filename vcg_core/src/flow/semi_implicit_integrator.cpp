@@ -26,7 +26,7 @@ constexpr double kEnergySlack = 1e-4;
 // by a few entries, so 4–9 solves with the old factor give the step's δ where a factorisation
 // costs about twenty. A solve that needed more than kRefactorAfter iterations, or did not
 // converge within kMaxIterations, makes the next step (or this one) factorise afresh. Below
-// SpdSolver::kCholmodMinRows rows a factorisation is cheap and every step has its own.
+// kPreconditionFromRows rows a factorisation is cheap and every step has its own.
 // Measured on the armadillo's 1,978-edge hole (155,000 patch vertices, 15 steps, 4 of them by
 // conjugate gradients): flow 31.6 / 32.1 s -> 28.2 / 28.6 s in two paired runs, the same patch.
 // The tolerance is loose for a linear solve, tight for a step: the acceptance tests judge δ.
@@ -35,6 +35,12 @@ constexpr double kEnergySlack = 1e-4;
 // factorisation costs 1.0 s. Fill of the armadillo's 794-edge hole 3.41 -> 2.52 s (one run each).
 constexpr double kPcgTolerance = 1e-4;  // of the preconditioned residual, relative to its start
 constexpr int kRefactorAfter = 8, kMaxIterations = 20;
+// From this many rows on, an earlier factorisation is tried first; below, every step factorises.
+// It was kCholmodMinRows (2,000): the elephant's 200-edge hole (1,522 free vertices, SimplicialLDLT)
+// then factorised at every step, and its flow took 80-81 ms; with the old factor tried first,
+// 69-76 ms (four paired runs, the same patch: 1,522 new vertices, 25.12°, E 26.432). 500 is not
+// tuned: it lies below the patches measured.
+constexpr int kPreconditionFromRows = 500;
 
 // A step that failed on a few vertices is tried again with those vertices (and their rings) held
 // where they were, instead of at half the step everywhere (SemiImplicitIntegrator::holdCulprits):
@@ -79,7 +85,7 @@ void SemiImplicitIntegrator::buildRows(const FlowState& state) {
 bool SemiImplicitIntegrator::solve() {
   SparseSolver& s = *solver_;
   const Eigen::SparseMatrix<double>& K = s.system.matrix();
-  if (!s.refactorNext && K.rows() >= SpdSolver::kCholmodMinRows && s.spd.factored()) {
+  if (!s.refactorNext && K.rows() >= kPreconditionFromRows && s.spd.factored()) {
     const int iterations = s.spd.solvePreconditioned(K, s.system.rhs(), s.delta, kPcgTolerance, kMaxIterations);
     if (iterations >= 0) {
       s.refactorNext = iterations > kRefactorAfter;

@@ -58,7 +58,10 @@ MeshFile readMesh(const std::string& path);
 
 /// readMesh(path) copied into `m` (cleared first): vertex i is m.vert[i], face f is m.face[f],
 /// selected faces have their selection flag set. Include <elastica/vcg_mesh.h> to call it.
+/// `spare`: room for this fraction more vertices and faces is reserved in `m` (address space only
+/// until used), so that elements appended later (a fill's patches) grow `m` in place instead of
+/// moving its arrays into larger ones, which holds both at once.
 /// @throws IoError as readMesh(path); `m` is then cleared.
-ReadReport readMesh(const std::string& path, VcgMesh& m);
+ReadReport readMesh(const std::string& path, VcgMesh& m, double spare = 0);
 
 }  // namespace elastica::io
