@@ -89,7 +89,7 @@ TEXT
 import sys, re
 doc, sec = sys.argv[1], open(sys.argv[2]).read()
 text = open(doc).read()
-start, end = "<!-- real-shapes", "<!-- /real-shapes -->"
+start, end = "<!-- real-shapes:", "<!-- /real-shapes -->"
 if start in text:
     a = text.index(start); b = text.index(end) + len(end)
     text = text[:a] + sec.rstrip("\n") + text[b:]

@@ -65,7 +65,7 @@ dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v -e '^?? ' -e 'do
 
 # The real-shape and denoising sections have their own, slower runs (bench/real_shapes.sh --page,
 # bench/denoise.sh): kept as they were.
-real_shapes=$(sed -n '/^<!-- real-shapes/,/^<!-- \/real-shapes -->/p' "$page" 2>/dev/null || true)
+real_shapes=$(sed -n '/^<!-- real-shapes:/,/^<!-- \/real-shapes -->/p' "$page" 2>/dev/null || true)
 real_shapes_notes=$(sed -n '/^<!-- real-shapes-notes/,/^<!-- \/real-shapes-notes -->/p' "$page" 2>/dev/null || true)
 denoising=$(sed -n '/^<!-- denoise/,/^<!-- \/denoise -->/p' "$page" 2>/dev/null || true)
 {
