@@ -107,7 +107,9 @@ TEST(RimRule, FillLeavesRimsOpenUnlessAsked) {
     for (const HoleReport& h : r.holes) {
       rims += h.rim;
       EXPECT_EQ(h.filled, !h.rim) << c.name << ": " << h.reason;
-      if (h.rim) EXPECT_NE(h.reason.find("outer rim"), std::string::npos) << h.reason;
+      if (h.rim) {
+        EXPECT_NE(h.reason.find("outer rim"), std::string::npos) << h.reason;
+      }
     }
     EXPECT_EQ(rims, c.rims) << c.name;
     EXPECT_EQ(Topology(mesh.vertexCount(), mesh.faces).boundaryEdgeCount() > 0, c.rims > 0) << c.name;  // only the rims stay open
