@@ -412,6 +412,24 @@ Scheme automaticScheme(const TriMesh& mesh, const std::vector<std::uint8_t>* fac
                                                                                   : Scheme::SemiImplicit;
 }
 
+// A stage's record as it starts: its level and the size of the mesh it flows.
+FlowStage beginStage(const FlowState& state, int level) {
+  FlowStage stage;
+  stage.level = level;
+  stage.vertices = state.mesh().vertexCount();
+  stage.faces = state.mesh().faceCount();
+  return stage;
+}
+
+// Ends a stage that began at `stageStart` (run time): `mesh` takes its state, the report its record.
+void endStage(FlowState& state, FlowStage& stage, double stageStart, Run& run, TriMesh& mesh) {
+  mesh = state.mesh();
+  stage.energy = state.energy();
+  stage.seconds = run.elapsed() - stageStart;
+  run.report.stages.push_back(stage);
+  run.report.energyFinal = stage.energy;
+}
+
 // A moving region whose vertices were jittered in 3-D (a scan's noise, a mesh perturbed by
 // hand) has folded faces and needle corners. The vector scheme's cotangent operators read that
 // tangle as curvature, and the few vertices at folds make every step so short that the flow
@@ -494,11 +512,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
       report.history.push_back({0, 0, 0, report.energyInitial});
       first = false;
     }
-    FlowStage stage;
-    bool meshBound = false;  // the vector scheme's stage ended because the mesh held it back
-    stage.level = level;
-    stage.vertices = state.mesh().vertexCount();
-    stage.faces = state.mesh().faceCount();
+    FlowStage stage = beginStage(state, level);
+    bool meshBound = false;  // the stage ended because the mesh, not the shape, held it back
     try {
       if (opt.scheme == Scheme::Explicit) {
         explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
@@ -520,11 +535,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
       mesh = state.mesh();  // the restored checkpoint (faces may have been flipped)
       throw;
     }
-    mesh = state.mesh();
-    stage.energy = state.energy();
-    stage.seconds = run.elapsed() - stageStart;
-    report.stages.push_back(stage);
-    report.energyFinal = stage.energy;
+    endStage(state, stage, stageStart, run, mesh);
     // A semi-implicit plateau at a small step (semiImplicitStage returned false) is a promise only
     // once a longer run keeps it: a reflow of the same level (remeshed, τ grown again) that ends
     // within kConfirmedPlateau of the stage before it confirms the shape. The genus-2 and genus-3
@@ -569,17 +580,10 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
       report.stop == StopReason::Converged) {
     untangleMovingRegion(mesh, selection, opt.boundary, true, report);
     FlowState state(mesh, selection, stageOpt, slider.get());
-    FlowStage stage;
-    stage.level = level;
-    stage.vertices = state.mesh().vertexCount();
-    stage.faces = state.mesh().faceCount();
+    FlowStage stage = beginStage(state, level);
     const double stageStart = run.elapsed();
     semiImplicitStage(state, run, stage, opt.energyTolerance, opt.plateauTolerance, false, lastTau);
-    mesh = state.mesh();
-    stage.energy = state.energy();
-    stage.seconds = run.elapsed() - stageStart;
-    report.stages.push_back(stage);
-    report.energyFinal = stage.energy;
+    endStage(state, stage, stageStart, run, mesh);
   }
   if (faceSelected && !faceSelected->empty()) *faceSelected = selection;
   report.seconds = run.elapsed();

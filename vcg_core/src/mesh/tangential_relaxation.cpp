@@ -8,6 +8,17 @@
 namespace elastica {
 namespace {
 
+// Twice the area times the unit normal of face f.
+Vec3 areaNormal(const TriMesh& mesh, int f) {
+  const auto& t = mesh.faces[f];
+  return (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
+}
+
+// `faceFlags`, or every face when it is empty.
+std::vector<std::uint8_t> flaggedOrAll(const TriMesh& mesh, const std::vector<std::uint8_t>& faceFlags) {
+  return faceFlags.empty() ? std::vector<std::uint8_t>(mesh.faces.size(), 1) : faceFlags;
+}
+
 // One Jacobi pass of p_i ← p_i + damping · Π_i(c_i − p_i) with the unit normals `normal`.
 void relaxPass(const Topology& topo, const std::vector<std::uint8_t>& free, const std::vector<Vec3>& normal,
                double damping, std::vector<Vec3>& positions, std::vector<Vec3>& next) {
@@ -27,9 +38,9 @@ void relaxPass(const Topology& topo, const std::vector<std::uint8_t>& free, cons
 void smoothedNormals(const Topology& topo, const TriMesh& mesh, int rings, std::vector<Vec3>& normal,
                      std::vector<Vec3>& scratch) {
   normal.assign(mesh.vertexCount(), Vec3::Zero());
-  for (const auto& f : mesh.faces) {
-    const Vec3 n = (mesh.positions[f[1]] - mesh.positions[f[0]]).cross(mesh.positions[f[2]] - mesh.positions[f[0]]);
-    for (int v : f) normal[v] += n;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Vec3 n = areaNormal(mesh, f);
+    for (int v : mesh.faces[f]) normal[v] += n;
   }
   for (int r = 0; r < rings; ++r) {
     scratch = normal;
@@ -55,16 +66,14 @@ void relaxTangentially(TriMesh& mesh, const std::vector<std::uint8_t>& free, int
 }
 
 bool isTangled(const TriMesh& mesh, const std::vector<std::uint8_t>& faceFlags, double angleDegrees) {
-  const std::vector<std::uint8_t> all(mesh.faces.size(), 1);
-  const std::vector<std::uint8_t>& flags = faceFlags.empty() ? all : faceFlags;
+  const std::vector<std::uint8_t> flags = flaggedOrAll(mesh, faceFlags);
   if (smallestAngleDegrees(mesh, flags) < angleDegrees) return true;
   std::vector<Vec3> cornerSum(mesh.vertexCount(), Vec3::Zero()), faceNormal(mesh.faces.size());
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
-    const auto& t = mesh.faces[f];
-    faceNormal[f] = (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]);
-    for (int v : t) cornerSum[v] += faceNormal[f];
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    faceNormal[f] = areaNormal(mesh, f);
+    for (int v : mesh.faces[f]) cornerSum[v] += faceNormal[f];
   }
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+  for (int f = 0; f < mesh.faceCount(); ++f) {
     if (!flags[f]) continue;
     const auto& t = mesh.faces[f];
     if (faceNormal[f].dot(cornerSum[t[0]] + cornerSum[t[1]] + cornerSum[t[2]]) < 0) return true;
@@ -79,8 +88,7 @@ int untangle(TriMesh& mesh, const std::vector<std::uint8_t>& free, const std::ve
   constexpr int kWindow = 10;
   constexpr double kProgress = 1.01;
   constexpr int kNormalRings = 2;
-  const std::vector<std::uint8_t> all(mesh.faces.size(), 1);
-  const std::vector<std::uint8_t>& flags = faceFlags.empty() ? all : faceFlags;
+  const std::vector<std::uint8_t> flags = flaggedOrAll(mesh, faceFlags);
   const Topology topo(mesh.vertexCount(), mesh.faces);
   std::vector<Vec3> normal, scratch, next;
   double checked = smallestAngleDegrees(mesh, flags);
