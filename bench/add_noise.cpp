@@ -6,10 +6,12 @@
 #include <elastica/io/mesh_writer.h>
 #include <elastica/topology.h>
 
+#include "test_meshes.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <random>
+#include <utility>
 
 using namespace elastica;
 
@@ -21,14 +23,7 @@ int main(int argc, char** argv) {
   try {
     TriMesh m = io::readMesh(argv[1]).mesh;
     const double radius = std::atof(argv[3]) * meanEdgeLength(Topology(m.vertexCount(), m.faces), m.positions);
-    std::mt19937 rng(static_cast<unsigned>(std::atoi(argv[4])));
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (Vec3& p : m.positions) {
-      Vec3 d;
-      do d = Vec3(u(rng), u(rng), u(rng));
-      while (d.squaredNorm() > 1);
-      p += radius * d;
-    }
+    m = test::ballJittered(std::move(m), radius, static_cast<unsigned>(std::atoi(argv[4])));
     io::writePly(argv[2], m, {}, true);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "add_noise: %s\n", e.what());

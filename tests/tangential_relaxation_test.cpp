@@ -48,7 +48,9 @@ TEST(Untangle, UnfoldsAJitteredGridWithinItsPlane) {
   EXPECT_GT(smallestAngleDegrees(m), 20.0);
   for (int v = 0; v < m.vertexCount(); ++v) {
     EXPECT_NEAR(m.positions[v].z(), 0.0, 1e-12);
-    if (!interior[v]) EXPECT_EQ(m.positions[v], before.positions[v]);
+    if (!interior[v]) {
+      EXPECT_EQ(m.positions[v], before.positions[v]);
+    }
   }
 }
 

@@ -117,16 +117,8 @@ TEST(VectorScheme, NoisySphereBecomesRound) {
 // discrete E is 1.6 % below: 24.73), with a true "converged" and its faces kept.
 TEST(VectorScheme, JitteredUvSphereBecomesRoundWithConnectivityKept) {
   for (unsigned seed : {1u, 2u, 3u}) {
-    TriMesh m = test::uvSphere(32, 16);
-    const double ell = meanEdgeLength(Topology(m.vertexCount(), m.faces), m.positions);
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-1, 1);
-    for (Vec3& p : m.positions) {
-      Vec3 d;
-      do d = Vec3(u(rng), u(rng), u(rng));
-      while (d.squaredNorm() > 1);
-      p += 0.5 * ell * d;
-    }
+    const TriMesh clean = test::uvSphere(32, 16);
+    TriMesh m = test::ballJittered(clean, 0.5 * meanEdgeLength(Topology(clean.vertexCount(), clean.faces), clean.positions), seed);
     const auto faces = m.faces;
     FlowOptions opt;
     opt.remesh = false;

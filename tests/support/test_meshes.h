@@ -63,6 +63,20 @@ inline TriMesh jittered(TriMesh m, double amplitude, unsigned seed = 1) {
   return m;
 }
 
+/// Moves each vertex by a vector drawn uniformly from the ball of radius `radius` (3-D noise, as
+/// bench/add_noise makes for the denoising table: tangential as well as normal).
+inline TriMesh ballJittered(TriMesh m, double radius, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (Vec3& p : m.positions) {
+    Vec3 d;
+    do d = Vec3(u(rng), u(rng), u(rng));
+    while (d.squaredNorm() > 1);
+    p += radius * d;
+  }
+  return m;
+}
+
 /// `m` without the faces for which `cut(centroid)` is true and the vertices left without a face.
 inline TriMesh cutAway(const TriMesh& m, const std::function<bool(const Vec3&)>& cut) {
   TriMesh out;

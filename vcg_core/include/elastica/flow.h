@@ -150,16 +150,18 @@ struct FlowOptions {
   /// Stop subdividing once the mean edge length is at or below this (0: no target).
   double targetEdgeLength = 0;
 
-  /// A fairing amount (a length, in the mesh's units; 0: off, flow until converged). The flow runs
-  /// for the time t = 2 (featureSize / 2π)⁴ and stops with StopReason::FeatureSize: on a nearly
-  /// flat piece the flow is u_t = −½ Δ²u, which damps a ripple of wavelength λ like
-  /// exp(−½ (2π/λ)⁴ t), so ripples of featureSize lose 1/e of their height, ripples of a third of
-  /// it vanish (e⁻⁸¹), and shapes five times larger keep all but 1/600 of theirs. A sphere does
-  /// not move at any t. Steps are at most t/4 (an implicit step damps a mode by 1/(1 + ½k⁴τ), not
-  /// by the exact exponential; four steps come within 10 % of it at featureSize) and are not
-  /// extrapolated. The remeshing before the first stage (FlowOptions::remesh) is skipped: it would
-  /// smooth below its edge length whatever the amount. Elastica and Laplacian-of-H flows (the
-  /// bilaplacian's time has no length unit).
+  /// A fairing amount (a length, in the mesh's units; 0: off, flow until converged). The flow's
+  /// principal part u_t = −½ Δ²u runs for the time t = 2 (featureSize / 2π)⁴ and stops with
+  /// StopReason::FeatureSize. It damps a ripple of wavelength λ like exp(−½ (2π/λ)⁴ t): ripples of
+  /// featureSize lose 1/e of their height, ripples of a third of it vanish (e⁻⁸¹), shapes five
+  /// times larger keep all but 1/600 of theirs, and a sphere of radius R shrinks by
+  /// 4R (featureSize / 2πR)⁴. With the vector scheme (Automatic's choice under an amount): four
+  /// linearly implicit steps with the operators of the mesh as given, its vertices and
+  /// connectivity kept, no step refused (the full flow's nonlinear terms act on the shape's own
+  /// scale, which the amount leaves alone, and on a noisy scan they read the noise as curvature).
+  /// With the explicit or semi-implicit scheme, or the Laplacian-of-H flow: that scheme's steps of
+  /// the full flow, at most t/4, without the first remeshing. Not for the bilaplacian flow (its
+  /// time has no length unit).
   double featureSize = 0;
 
   long long maxSteps = 2'000'000;  ///< over all stages

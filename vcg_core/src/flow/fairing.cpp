@@ -4,6 +4,7 @@
 #include "flow/explicit_integrator.h"
 #include "flow/flow_state.h"
 #include "flow/mesh_quality_stage.h"
+#include "flow/principal_part_filter.h"
 #include "flow/semi_implicit_integrator.h"
 #include "flow/vector_integrator.h"
 #include "mesh/self_intersection.h"
@@ -326,8 +327,6 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
   const double neckLimit = std::max(kNeckCurvatureTimesEdge, kNeckGrowth * largestCurvatureTimesEdge(state));
   bestEnergy = state.energy();
   best = state.mesh();
-  // Under a flow-time budget each step is the time it stands for: no extrapolation.
-  integrator.allowExtrapolation(!run.timeLimited());
   while (!run.limitReached()) {
     ++report.steps;
     tau = run.capped(tau);
@@ -398,6 +397,23 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
   return true;
 }
 
+// FlowOptions::featureSize under the vector scheme: the flow's principal part for the amount's
+// flow time, kFeatureSteps steps of one factorisation (flow/principal_part_filter.h). No step is
+// refused: the filter is linear and each step lowers the principal part's energy ¼ XᵀC M⁻¹C X.
+void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
+  const double tau = run.timeLimit / kFeatureSteps;
+  PrincipalPartFilter filter;
+  if (!filter.prepare(state, tau))
+    throw NumericalError("fair: the fairing amount's matrix is not positive definite (a degenerate moving region)");
+  while (!run.limitReached()) {
+    ++run.report.steps;
+    if (!filter.step(state)) throw NumericalError("fair: the fairing amount's step is not finite");
+    ++stage.steps;
+    run.time += tau;
+    if (run.record(state, stage.level, state.energy())) return;
+  }
+}
+
 // Scheme::Automatic: the vector scheme unless the region has handles resolved by fewer than
 // kVectorVerticesPerHandle vertices each (the genus of a closed mesh; a region with a border
 // counts as a disk: closedGenus). Judged on the input, before any subdivision:
@@ -410,6 +426,14 @@ Scheme automaticScheme(const TriMesh& mesh, const std::vector<std::uint8_t>* fac
   for (int l = 0; l < opt.subdivisionLevels; ++l) moving *= 4;
   return moving >= static_cast<long long>(kVectorVerticesPerHandle) * (genus + 1) ? Scheme::Vector
                                                                                   : Scheme::SemiImplicit;
+}
+
+void requireMovingVertex(const FlowState& state) {
+  if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
+    throw InvalidInputError(
+        "fair: no vertex can move (a moving vertex needs all its faces selected and, with a fixed "
+        "boundary, must be at least two rings away from the boundary)");
+  }
 }
 
 // A stage's record as it starts: its level and the size of the mesh it flows.
@@ -436,7 +460,7 @@ void endStage(FlowState& state, FlowStage& stage, double stageStart, Run& run, T
 // crawls: a 32×16 UV sphere jittered by half an edge, connectivity kept, was still at E 173 and a
 // 123 % radius spread after 15,535 steps and 30 s. Untangled first (mesh/tangential_relaxation.h:
 // tangential moves only), it converges round in under 450 steps. A region that no remeshing
-// resamples first (FlowOptions::remesh off, or a fairing amount) is untangled when a corner is
+// resamples first (FlowOptions::remesh off) is untangled when a corner is
 // under kTangledAngle or a face is folded against its corners' normals; any other mesh flows as
 // it came (`always` false). A stage that the mesh held back (vectorStage returned false) with the
 // connectivity kept is untangled whatever its angles (`always`) and flowed again, as a remeshing
@@ -458,7 +482,9 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   validate(requested);
   // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
   FlowOptions opt = requested;
-  if (opt.scheme == Scheme::Automatic) opt.scheme = automaticScheme(mesh, faceSelected, opt);
+  // A fairing amount needs no scheme choice: its filter is linear (featureSizeStage).
+  if (opt.scheme == Scheme::Automatic)
+    opt.scheme = opt.featureSize > 0 ? Scheme::Vector : automaticScheme(mesh, faceSelected, opt);
   if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
   if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
   FlowReport report;
@@ -472,6 +498,19 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   std::unique_ptr<BoundarySlider> slider;
   if (opt.boundary == BoundaryMode::Slide)
     slider = std::make_unique<BoundarySlider>(Topology(mesh.vertexCount(), mesh.faces), mesh.positions);
+
+  // A fairing amount keeps the user's vertices and connectivity: no refinement, no remeshing.
+  if (opt.scheme == Scheme::Vector && run.timeLimited()) {
+    FlowState state(mesh, selection, opt, slider.get());
+    requireMovingVertex(state);
+    report.energyInitial = state.energy();
+    report.history.push_back({0, 0, 0, report.energyInitial});
+    FlowStage stage = beginStage(state, 0);
+    featureSizeStage(state, run, stage);
+    endStage(state, stage, 0, run, mesh);  // the run's only stage: it started with the run
+    report.seconds = run.elapsed();
+    return report;
+  }
 
   // The semi-implicit pipeline keeps the mesh fit for the operators (FlowOptions::remesh,
   // flow/mesh_quality_stage.h): first the working-resolution floor, within the levels asked for.
@@ -499,11 +538,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     if (adaptive && remeshMovingRegion(mesh, selection, opt.boundary, true)) ++report.remeshings;
     adaptive = false;
     FlowState state(mesh, selection, stageOpt, slider.get());
-    if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
-      throw InvalidInputError(
-          "fair: no vertex can move (a moving vertex needs all its faces selected and, with a fixed "
-          "boundary, must be at least two rings away from the boundary)");
-    }
+    requireMovingVertex(state);
     const bool refineLater = level < opt.subdivisionLevels &&
                              (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
     const double stageStart = run.elapsed();
@@ -521,10 +556,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
         bool neckFormed = false;
         meshBound = !vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
                                  quality && !report.inputSelfIntersects, lastTau, best, bestEnergy, neckFormed);
-        // The stage's output is its lowest-energy state before any neck formed; under a flow-time
-        // budget (FlowOptions::featureSize), the state at that time: the flow's answer to the amount
-        // asked for, whose E may be above the input's where W's tangential part evened the mesh out.
-        if (neckFormed || (!run.timeLimited() && bestEnergy < state.energy()))
+        // The stage's output is its lowest-energy state (before any neck formed).
+        if (neckFormed || bestEnergy < state.energy())
           state = FlowState(best, selection, stageOpt, slider.get());
       } else {
         const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
@@ -576,7 +609,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   // round start, 1.25 % from a jittered one, at E 24.71 < 8π). The paper's normal flow, after the
   // vertices are evened out tangentially, settles where the shape is the surface's, not the
   // triangulation's: 0.2 % in 19 semi-implicit steps, E 24.74 (0.1 % above the vector minimum).
-  if (opt.scheme == Scheme::Vector && !quality && !run.timeLimited() && !run.stopped &&
+  if (opt.scheme == Scheme::Vector && !quality && !run.stopped &&
       report.stop == StopReason::Converged) {
     untangleMovingRegion(mesh, selection, opt.boundary, true, report);
     FlowState state(mesh, selection, stageOpt, slider.get());

@@ -193,7 +193,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   // τ ≫ T moved 0.15 ℓ each and lowered W by 0.03 each, for hundreds of steps.
   bool anyHeld = false;
   for (int v = 0; v < nv && !anyHeld; ++v) anyHeld = held_[v] != 0;
-  if (allowExtrapolation_ && !anyHeld && !lastStepShortened_) {
+  if (!anyHeld && !lastStepShortened_) {
     double alpha = 1;
     const double limit = std::min(kMaxExtrapolation, overshoot > 0 ? 1 / overshoot : kMaxExtrapolation);
     while (2 * alpha <= limit) {

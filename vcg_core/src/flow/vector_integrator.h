@@ -39,8 +39,6 @@ class VectorIntegrator {
   /// falling beyond it).
   double lastExtrapolation() const { return lastExtrapolation_; }
   void guardEmbedding(bool on) { guardEmbedding_ = on; }
-  /// Whether an accepted step may be carried on along its direction (on by default).
-  void allowExtrapolation(bool on) { allowExtrapolation_ = on; }
   long long crossingRejections() const { return crossingRejections_; }
   /// Whether the last accepted step held vertices that would have made faces cross (a contact).
   bool lastStepHeldContact() const { return lastStepHeldContact_; }
@@ -52,7 +50,7 @@ class VectorIntegrator {
   bool solve(const std::vector<Vec3>& gradient, double tau);
 
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
-  bool lastStepShortened_ = false, guardEmbedding_ = false, allowExtrapolation_ = true, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
+  bool lastStepShortened_ = false, guardEmbedding_ = false, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
   long long crossingRejections_ = 0;
   long long connectivityVersion_ = -1;
   std::vector<int> freeIndex_;
