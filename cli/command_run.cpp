@@ -145,7 +145,7 @@ void runScript(const RunArgs& a) {
     for (const ea::LogLine& line : summary)
       std::printf("%s: %s%s\n", f.name.c_str(), line.severity == ea::Severity::Warning ? "warning: " : "",
                   line.text.c_str());
-    const ea::FilterOutputs outputs = ea::filterOutputs(id, values);
+    const ea::FilterOutputs outputs = ea::filterOutputs(id, ea::readJob(spec, values, ea::Caller::MeshLab));
     if (outputs.curvature) w.vertexQuality = w.vertexColor = w.curvature = true;
     if (outputs.faceSelection) w.faceFlags = true;
   }

@@ -107,10 +107,10 @@ void checkFillInput(const TriMesh& mesh, RepairHints hints) {
   rejectDefects(d.inconsistentEdges, d.nonManifoldVertices, hints);
 }
 
-FilterOutputs filterOutputs(FilterId id, const ParamValues& v) {
+FilterOutputs filterOutputs(FilterId id, const JobOptions& job) {
   switch (id) {
-    case FilterId::Fairing: return {v.getBool("colorByMeanCurvature"), v.getBool("Selected")};
-    case FilterId::FillHoles: return {false, v.getBool("NewFaceSelected")};
+    case FilterId::Fairing: return {job.colorByMeanCurvature, job.selected};
+    case FilterId::FillHoles: return {false, job.selectNewFaces};
     case FilterId::Curvature: return {true, false};
   }
   return {};

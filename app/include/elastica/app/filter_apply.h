@@ -112,15 +112,16 @@ AppliedFilter applyFilter(FilterId id, VcgMeshT& m, const ParamValues& v, const 
     return a;
   }
   if (id == FilterId::FillHoles) {
+    const bool selectNew = readJob(filterSpec(id, {}), v, Caller::MeshLab).selectNewFaces;
     FillHolesResult r = runFillHoles(toTriMesh(m), v, progress);
-    writeBack(r, m, v.getBool("NewFaceSelected"));
+    writeBack(r, m, selectNew);
     const bool changed = r.report.filledCount() > 0 || !r.report.welds.empty();
     a.changed.positions = a.changed.connectivity = changed;
-    a.changed.selection = changed && v.getBool("NewFaceSelected");
+    a.changed.selection = changed && selectNew;
     a.log = std::move(r.log);
     return a;
   }
-  const bool selected = v.getBool("Selected");
+  const bool selected = readJob(filterSpec(id, {}), v, Caller::MeshLab).selected;
   FairingResult r = runFairing(toTriMesh(m), selected ? std::optional<FaceSet>(faceSelection(m)) : std::nullopt, v, progress);
   writeBack(r, m);
   if (r.outputCurvature) storeCurvature(m, r.curvature.H, r.curvature.K);

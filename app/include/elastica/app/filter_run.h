@@ -59,7 +59,7 @@ struct FilterOutputs {
   bool curvature = false;      ///< vertex quality and colour by H; mean/gaussian_curvature attributes
   bool faceSelection = false;  ///< the face selection was set
 };
-FilterOutputs filterOutputs(FilterId id, const ParamValues& v);
+FilterOutputs filterOutputs(FilterId id, const JobOptions& job);
 
 /// FlowOptions::maxSteps for a step limit as the faces take it: 0 means no limit.
 long long stepLimit(long long steps);
