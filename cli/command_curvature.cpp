@@ -1,6 +1,7 @@
 // `elastica curvature IN -o OUT.ply`: discrete mean and Gaussian curvature and the total
 // curvature energy of a mesh.
 #include "commands.h"
+#include "flow_options.h"
 #include "mesh_files.h"
 
 #include <elastica/app/choices.h>
@@ -18,17 +19,15 @@ namespace {
 struct CurvatureArgs {
   std::string input, output;
   bool ascii = false;
-  VertexArea area = VertexArea::Mixed;
-  bool lambdaFix = false;
+  app::ParamValues given;  // the table's options given, by row
 };
 
 void runCurvature(const CurvatureArgs& a) {
   checkMeshOutput(a.output, a.input);
   const TriMesh mesh = loadMesh(a.input).mesh;
   // readMesh refused inconsistent orientation and non-manifold edges and split bow-tie vertices.
-  CurvatureMeasureOptions opt;
-  opt.area = a.area;
-  opt.curvature.h2k = a.lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
+  const CurvatureMeasureOptions opt =
+      app::readJob(app::filterSpec(app::FilterId::Curvature, {}), a.given, app::Caller::Cli).curvature;
   const app::CurvatureResult r = app::runCurvature(mesh, opt);
   const MeshCurvature& c = r.curvature;
 
@@ -37,7 +36,8 @@ void runCurvature(const CurvatureArgs& a) {
   std::printf("%s: %s, %s, %s, Euler characteristic %d\n", a.input.c_str(), plural(mesh.vertexCount(), "vertex").c_str(),
               plural(mesh.faceCount(), "face").c_str(), c.boundaryEdges ? "with boundary" : "closed",
               c.eulerCharacteristic);
-  for (const std::string& line : r.log) std::printf("%s\n", line.c_str());
+  for (const app::LogLine& line : r.log)
+    std::printf("%s%s\n", line.severity == app::Severity::Warning ? "warning: " : "", line.text.c_str());
   std::printf("wrote %s\n", a.output.c_str());
 }
 
@@ -52,12 +52,8 @@ void addCurvatureCommand(CLI::App& app) {
       "quality (= H, +1/r on a sphere with outward normals) and a colour ramp by H (in a .ply output).");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
+  addTableOptions(*cmd, app::FilterId::Curvature, args->given);
   cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
-  cmd->add_option("--area", args->area,
-                  "vertex area: mixed (Meyer et al.'s mixed Voronoi area, default) or barycentric (the paper's A/3)")
-      ->transform(CLI::CheckedTransformer(app::nameMap<VertexArea>(), CLI::ignore_case));
-  cmd->add_flag("--lambda-fix", args->lambdaFix,
-                "apply the paper's lambda rescaling of H where H^2 < K (guarded); E still uses raw H");
   cmd->callback([args] { runCurvature(*args); });
 }
 

@@ -11,18 +11,19 @@
 #include <elastica/app/reports.h>
 #include <elastica/errors.h>
 
-#include <algorithm>
+#include <elastica/face_set.h>
+
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 namespace elastica::cli {
 namespace {
 
 struct FairArgs {
   std::string input, output, report, selectedFaces;
-  bool ascii = false, color = false, progress = false, selected = false;
-  double featureSize = 0;  // a fraction of the bounding-box diagonal
-  FlowOptions flow;
+  bool ascii = false, progress = false;
+  app::ParamValues given;  // the table's options given, by row
 };
 
 void runFair(FairArgs& a) {
@@ -32,13 +33,16 @@ void runFair(FairArgs& a) {
   const io::ReadReport& read = file.report;
   TriMesh input = std::move(file.mesh);
   const int inVertices = input.vertexCount(), inFaces = input.faceCount();
+  // --feature-size is a fraction of the bounding-box diagonal.
+  app::JobOptions job =
+      app::readJob(app::filterSpec(app::FilterId::Fairing, {}), a.given, app::Caller::Cli, boundingBoxDiagonal(input.positions));
+  FlowOptions& flow = job.flow;
 
-  std::vector<std::uint8_t> selection;
-  if (a.selected) {
+  std::optional<FaceSet> region;
+  if (job.selected) {
     if (!read.hasFaceSelection) throw InvalidInputError(a.input + ": --selected, but the file has no face selection flags");
-    selection = std::move(file.faceSelection);
-    if (std::count(selection.begin(), selection.end(), 1) == 0)
-      throw InvalidInputError(a.input + ": --selected, but no face is selected");
+    region = FaceSet::fromFlags(file.faceSelection);
+    if (region->faces.empty()) throw InvalidInputError(a.input + ": --selected, but no face is selected");
   }
   if (!a.selectedFaces.empty()) {
     // The indices count the file's faces; reading must not have renumbered them.
@@ -48,19 +52,18 @@ void runFair(FairArgs& a) {
                               std::to_string(read.polygonsTriangulated) + " polygons triangulated, " +
                               std::to_string(read.degenerateFacesRemoved + read.duplicateFacesRemoved) +
                               " faces removed), so its face numbers do not match; save the mesh as triangles first");
-    selection = readFaceIndexFile(a.selectedFaces, inFaces);
+    region = FaceSet::fromFlags(readFaceIndexFile(a.selectedFaces, inFaces));
   }
 
-  a.flow.featureSize = a.featureSize * boundingBoxDiagonal(input.positions);
-  a.flow.progress = terminalProgress("fair", a.progress);
+  flow.progress = terminalProgress("fair", a.progress);
   app::FairingResult result;
   try {
-    result = app::runFairing(std::move(input), std::move(selection), a.flow, /*outputCurvature=*/true);
+    result = app::runFairing(std::move(input), std::move(region), flow, /*outputCurvature=*/true);
   } catch (const FlowDivergedError& e) {
     endProgressLine();
     // The mesh is not written, but the report tells how far the run got and why it stopped.
     if (!a.report.empty()) {
-      nlohmann::json j = app::fairingReport(e.report(), a.flow, inVertices, inFaces);
+      nlohmann::json j = app::fairingReport(e.report(), flow, inVertices, inFaces);
       j["input"]["file"] = a.input;
       j["error"] = e.what();
       writeJson(a.report, j);
@@ -77,22 +80,21 @@ void runFair(FairArgs& a) {
 
   // The file's other attributes are not written (the reader keeps only the face selection).
   const MeshCurvature& curv = result.curvature;
-  writeCurvatureMesh(a.output, result.mesh, curv.H, curv.K, a.ascii, a.color);
+  writeCurvatureMesh(a.output, result.mesh, curv.H, curv.K, a.ascii, job.colorByMeanCurvature);
   const TriMesh& mesh = result.mesh;
   const FlowReport& report = result.report;
 
   std::printf("%s: %d vertices, %d faces -> %d vertices, %d faces\n", a.input.c_str(), inVertices, inFaces,
               mesh.vertexCount(), mesh.faceCount());
-  std::printf("flow %s, scheme %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(a.flow.flow),
+  std::printf("flow %s, scheme %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(flow.flow),
               app::nameOf(report.scheme), report.steps, report.seconds,
               app::nameOf(report.stop), report.stages.size(), report.stages.size() == 1 ? "" : "s");
   std::printf("energy %.9g -> %.9g\n", result.energyInput, result.energyOutput);
-  for (const std::string& line : result.log)  // the flow's own start, when it differs from the input's
-    if (line.rfind("the flow's energy", 0) == 0) std::printf("%s\n", line.c_str());
+  if (!result.flowEnergyLine.empty()) std::printf("%s\n", result.flowEnergyLine.c_str());
   std::printf("wrote %s\n", a.output.c_str());
 
   if (!a.report.empty()) {
-    nlohmann::json j = app::fairingReport(report, a.flow, inVertices, inFaces, &result);
+    nlohmann::json j = app::fairingReport(report, flow, inVertices, inFaces, &result);
     j["input"]["file"] = a.input;
     j["output"]["file"] = a.output;
     writeJson(a.report, j);
@@ -110,24 +112,15 @@ void addFairCommand(CLI::App& app) {
       "optionally coarse to fine. Writes H as quality (and colour with --color-by-mean-curvature) in a .ply output.");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
-  addFlowOptions(*cmd, args->flow);
-  addWholeMeshFlowOptions(*cmd, args->flow);
-  cmd->add_option("--feature-size", args->featureSize,
-                  "a fairing amount: smooth away bumps smaller than this fraction of the bounding-box diagonal "
-                  "(e.g. 0.03), keep larger shapes, then stop (default 0: fair until converged)")
-      ->check(CLI::Range(0.0, 1.0));
-  CLI::Option* selected = cmd->add_flag(
-      "--selected", args->selected,
-      "fair only the selected faces (PLY face flags, as MeshLab saves its selection, or a face property 'selected'); "
-      "two rings around stay fixed");
+  addTableOptions(*cmd, app::FilterId::Fairing, args->given);
+  addFlowChecks(*cmd, app::FilterId::Fairing, args->given);
   cmd->add_option("--selected-faces", args->selectedFaces,
                   "fair only the faces listed in this text file (0-based face indices, separated by spaces, commas or "
                   "lines; # starts a comment); two rings around stay fixed")
-      ->excludes(selected);
+      ->excludes(cmd->get_option("--selected"));
   cmd->add_option("--report", args->report, "write a JSON report (energies, steps, stages, energy history)");
   addProgressFlag(*cmd, args->progress);
   cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
-  cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
   cmd->callback([args] { runFair(*args); });
 }
 

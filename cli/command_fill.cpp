@@ -21,8 +21,8 @@ namespace {
 
 struct FillArgs {
   std::string input, output, report;
-  bool ascii = false, color = false, progress = false;
-  HoleFillOptions fill;
+  bool ascii = false, progress = false;
+  app::ParamValues given;  // the table's options given, by row
 };
 
 // Room reserved for new vertices and faces, as a fraction of the input's (address space only until
@@ -31,6 +31,8 @@ constexpr double kFillSpare = 0.5;
 
 void runFill(FillArgs& a) {
   checkMeshOutput(a.output, a.input);
+  app::JobOptions job = app::readJob(app::filterSpec(app::FilterId::FillHoles, {}), a.given, app::Caller::Cli);
+  HoleFillOptions& fill = job.fill;
   if (!a.report.empty()) io::checkOutputPath(a.report, a.input);
   // The patches are appended to the mesh as read: with room for them reserved, its vertex and face
   // arrays grow in place. Without it, the face array (about 600 MB for a 2.2-million-vertex scan)
@@ -40,10 +42,10 @@ void runFill(FillArgs& a) {
   TriMesh input = toTriMesh(vm);
   const int inVertices = input.vertexCount(), inFaces = input.faceCount();
 
-  a.fill.flow.progress = terminalProgress("fill", a.progress);
+  fill.flow.progress = terminalProgress("fill", a.progress);
   app::FillHolesResult result;
   try {
-    result = app::runFillHoles(std::move(input), a.fill, /*outputCurvature=*/true);
+    result = app::runFillHoles(std::move(input), fill, /*outputCurvature=*/true);
   } catch (...) {
     endProgressLine();
     throw;
@@ -59,7 +61,7 @@ void runFill(FillArgs& a) {
   storeCurvature(vm, result.curvature.H, result.curvature.K);
   const int outVertices = result.mesh.vertexCount(), outFaces = result.mesh.faceCount();
   nlohmann::json json;
-  if (!a.report.empty()) json = app::fillingReport(result, a.fill);
+  if (!a.report.empty()) json = app::fillingReport(result, fill);
   // From here the vcglib mesh holds all that is written: the fill's own copy of the mesh and its
   // curvature go before the writer makes its arrays (about 150 MB for a 2.2-million-vertex scan).
   result.mesh = TriMesh();
@@ -68,7 +70,7 @@ void runFill(FillArgs& a) {
   io::PlyWriteOptions w;
   w.binary = !a.ascii;
   w.vertexQuality = w.curvature = true;
-  w.vertexColor = a.color;
+  w.vertexColor = job.colorByMeanCurvature;
   w.faceFlags = true;
   w.faceFloatAttributes = {"elastica_new"};
   writeMeshFile(a.output, vm, w);
@@ -129,24 +131,11 @@ void addFillCommand(CLI::App& app) {
       "copies merged where a patch joins their fans.)");
   cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
   cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
-  cmd->add_option("--max-hole-edges", args->fill.maxHoleEdges, "fill holes with at most this many border edges")
-      ->capture_default_str()
-      ->check(parameterRange(app::FilterId::FillHoles, "MaxHoleSize"));
-  cmd->add_flag("--close-rims", args->fill.closeRims,
-                "also close the outer rims of open surfaces (by default a scan's outline stays open: a border that "
-                "turns like an outline and spans a quarter or more of its piece's area; docs/restoration.md)");
-  cmd->add_option("--stop-after", args->fill.stopAfter,
-                  "triangulation, refinement, biharmonic (CGAL-like fairing) or flow (default)")
-      ->transform(CLI::CheckedTransformer(app::nameMap<FillStage>(), CLI::ignore_case));
-  cmd->add_option("--density", args->fill.refinement.density,
-                  "Liepa's refinement factor: larger makes smaller triangles")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
-  addFlowOptions(*cmd, args->fill.flow);
+  addTableOptions(*cmd, app::FilterId::FillHoles, args->given);
+  addFlowChecks(*cmd, app::FilterId::FillHoles, args->given);
   cmd->add_option("--report", args->report, "write a JSON report (one entry per hole)");
   addProgressFlag(*cmd, args->progress);
   cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
-  cmd->add_flag("--color-by-mean-curvature", args->color, "colour vertices by H (red low, blue high)");
   cmd->callback([args] { runFill(*args); });
 }
 

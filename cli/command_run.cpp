@@ -1,6 +1,6 @@
 // `elastica run -i IN -o OUT -s SCRIPT.mlx`: run a MeshLab filter script that uses the Elastica
 // filters, as meshlabserver with the plugin would, with the same parameter semantics and the same
-// numerics (both go through filters/). Friendlier than meshlabserver: a parameter the script omits
+// numerics (both go through app/). Friendlier than meshlabserver: a parameter the script omits
 // takes its default, with a warning.
 #include "commands.h"
 #include "mesh_files.h"
@@ -97,6 +97,7 @@ std::string describeDefault(const ea::ParamSpec& p) {
 ea::ParamValues resolveValues(const std::string& path, const MlxFilter& f, const ea::FilterSpec& spec) {
   ea::ParamValues values = ea::ParamValues::defaults(spec);
   for (const ea::ParamSpec& ps : spec.params) {
+    if (!ps.inMeshLab()) continue;
     const MlxParam* given = nullptr;
     for (const MlxParam& p : f.params)
       if (p.name == ps.name) given = &p;
@@ -133,7 +134,7 @@ void runScript(const RunArgs& a) {
       drawn = tty;
       return true;
     };
-    std::vector<std::string> summary;
+    std::vector<ea::LogLine> summary;
     try {
       summary = ea::applyFilter(id, vm, values, progress).log;
     } catch (const Error& e) {
@@ -141,8 +142,10 @@ void runScript(const RunArgs& a) {
       throw Error(a.script + ":" + std::to_string(f.line) + ": " + f.name + ": " + e.what() + "; nothing written");
     }
     if (drawn) std::fprintf(stderr, "\n");
-    for (const std::string& line : summary) std::printf("%s: %s\n", f.name.c_str(), line.c_str());
-    const ea::FilterOutputs outputs = ea::filterOutputs(id, values);
+    for (const ea::LogLine& line : summary)
+      std::printf("%s: %s%s\n", f.name.c_str(), line.severity == ea::Severity::Warning ? "warning: " : "",
+                  line.text.c_str());
+    const ea::FilterOutputs outputs = ea::filterOutputs(id, ea::readJob(spec, values, ea::Caller::MeshLab));
     if (outputs.curvature) w.vertexQuality = w.vertexColor = w.curvature = true;
     if (outputs.faceSelection) w.faceFlags = true;
   }

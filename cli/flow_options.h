@@ -1,26 +1,22 @@
-// Command-line options of the commands that run a flow (fair and fill):
-// they fill one FlowOptions, the same struct the MeshLab plugin fills from its dialog.
+// The command-line options of the fair, fill and curvature commands, generated from the options
+// table (app/filter_spec.h): one option per row with a CLI flag, its type, range, default and
+// help from the row. The values given are collected by row and turned into options by
+// app::readJob, as every face's are.
 #pragma once
 
 #include <elastica/app/filter_spec.h>
-#include <elastica/flow.h>
 
 #include <CLI/CLI.hpp>
 
 namespace elastica::cli {
 
-/// A check of a number against the range the application layer declares for a filter parameter
-/// (app/filter_spec.h), so a flag and its MeshLab parameter accept the same values.
-CLI::Validator parameterRange(app::FilterId filter, const std::string& parameter);
+/// Registers an option for every row of filter `filter` that has a CLI flag, in the table's order:
+/// a number checked against the row's range when parsed, an enum by its words (app/choices.h), a
+/// Bool row as a flag that sets the opposite of the core's default. Values given go into `given`.
+void addTableOptions(CLI::App& cmd, app::FilterId filter, app::ParamValues& given);
 
-/// Registers what every flow run honours: --flow, --scheme, --max-steps, --max-seconds,
-/// --energy-tol, --shape-tol, --no-tangential, --h2k, --area and --step-factor, writing into `opt`.
-/// Choices are the application layer's names (app/choices.h).
-void addFlowOptions(CLI::App& cmd, FlowOptions& opt);
-
-/// Registers what only a flow over a whole mesh or region honours (not a hole's patch, whose
-/// surroundings are fixed and whose faces must not be split): --subdivide, --target-edge,
-/// --remesh, --boundary.
-void addWholeMeshFlowOptions(CLI::App& cmd, FlowOptions& opt);
+/// The checks of a flow command's options against each other, after parsing: an option of one
+/// scheme is refused with another, and the bilaplacian flow without --scheme runs explicit.
+void addFlowChecks(CLI::App& cmd, app::FilterId filter, app::ParamValues& given);
 
 }  // namespace elastica::cli

@@ -15,6 +15,7 @@ namespace {
 ea::ParamValues readParameters(const ea::FilterSpec& spec, const RichParameterList& params) {
   ea::ParamValues v;
   for (const ea::ParamSpec& p : spec.params) {
+    if (!p.inMeshLab()) continue;
     const QString name = qs(p.name);
     if (!params.hasParameter(name)) throw InvalidInputError("parameter '" + p.name + "' is missing");
     switch (p.type) {
@@ -72,6 +73,7 @@ void addParameters(ea::FilterId id, const CMeshO& m, RichParameterList& params) 
   const ea::MeshFacts facts = ea::meshFacts(m);
   const ea::FilterSpec spec = ea::filterSpec(id, facts);
   for (const ea::ParamSpec& p : spec.params) {
+    if (!p.inMeshLab()) continue;
     const QString name = qs(p.name), label = qs(p.label), tip = qs(p.tooltip);
     switch (p.type) {
       case ea::ParamType::Bool: params.addParam(RichBool(name, p.defaultValue != 0, label, tip)); break;
@@ -103,9 +105,10 @@ RunOutcome runFilter(ea::FilterId id, MeshDocument& md, const RichParameterList&
   outcome.changed = changedMask(applied.changed);
   if (applied.changed.curvature) mm->updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
   if (applied.changed.positions || applied.changed.connectivity) updateBoxAndNormals(*mm);
-  static const std::string kWarning = "warning: ";
-  for (const std::string& line : applied.log)
-    outcome.log.push_back({line.compare(0, kWarning.size(), kWarning) == 0, spec.name + ": " + line});
+  for (const ea::LogLine& line : applied.log) {
+    const bool warning = line.severity == ea::Severity::Warning;
+    outcome.log.push_back({warning, spec.name + ": " + (warning ? "warning: " : "") + line.text});
+  }
   return outcome;
 }
 

@@ -9,6 +9,7 @@
 #include <elastica/app/reports.h>
 #include <elastica/errors.h>
 #include <elastica/face_set.h>
+#include <elastica/geometry.h>
 #include <elastica/io/atomic_file.h>
 #include <elastica/io/mesh_reader.h>
 #include <elastica/io/mesh_writer.h>
@@ -18,6 +19,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -106,31 +108,30 @@ E choice(const std::string& what, const std::string& name) {
   throw InvalidInputError(what + " must be one of " + known + ", not '" + name + "'");
 }
 
-// The one-byte-per-face selection from selected_faces: face indices, or a bool mask per face.
-std::vector<std::uint8_t> selectionFrom(const py::object& selected, int faceCount) {
-  std::vector<std::uint8_t> flags;
-  if (selected.is_none()) return flags;
+// The region selected_faces names: face indices, or a bool mask per face.
+std::optional<FaceSet> selectionFrom(const py::object& selected, int faceCount) {
+  if (selected.is_none()) return std::nullopt;
   py::array a = py::array::ensure(selected);
   if (!a) throw InvalidInputError("selected_faces must be face indices or a bool mask");
+  FaceSet region({});
   if (a.dtype().kind() == 'b') {
     const auto mask = py::array_t<bool, py::array::c_style | py::array::forcecast>::ensure(a);
     if (mask.ndim() != 1 || mask.shape(0) != faceCount)
       throw InvalidInputError("a bool selected_faces needs one entry per face (" + std::to_string(faceCount) + ")");
-    flags.assign(mask.data(), mask.data() + faceCount);
+    for (int f = 0; f < faceCount; ++f)
+      if (mask.data()[f]) region.faces.push_back(f);
   } else {
     const auto idx = py::array_t<long long, py::array::c_style | py::array::forcecast>::ensure(a);
     if (!idx || idx.ndim() != 1) throw InvalidInputError("selected_faces must be a 1-D array of face indices");
-    std::vector<int> faces;
     for (py::ssize_t i = 0; i < idx.shape(0); ++i) {
       const long long f = idx.data()[i];
       if (f < 0 || f >= faceCount)
         throw InvalidInputError("selected_faces: " + std::to_string(f) + " is not a face of " + std::to_string(faceCount));
-      faces.push_back(static_cast<int>(f));
+      region.faces.push_back(static_cast<int>(f));
     }
-    flags = FaceSet(std::move(faces)).flags(static_cast<std::size_t>(faceCount));
   }
-  if (std::count(flags.begin(), flags.end(), 1) == 0) throw InvalidInputError("selected_faces selects no face");
-  return flags;
+  if (region.faces.empty()) throw InvalidInputError("selected_faces selects no face");
+  return region;
 }
 
 // progress(dict) -> bool on the flow's checks, with the GIL held for the call. A Python exception
@@ -184,81 +185,132 @@ auto withoutGil(PythonProgress& progress, Job job) {
   return std::move(*result);
 }
 
-// A keyword argument checked against the range of the filter parameter it stands for, the error
-// in the caller's name ("max_steps must be >= 0", not the core's field names).
-void checkArgument(app::FilterId filter, const char* parameter, const char* keyword, double value) {
-  const app::FilterSpec spec = app::filterSpec(filter, {});
-  const app::ParamSpec& p = *spec.param(parameter);
-  if (value >= p.minValue && value <= p.maxValue) return;
-  auto text = [](double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.9g", x);
-    return std::string(b);
-  };
-  const std::string range = p.maxValue < std::numeric_limits<double>::infinity()
-                                ? "in " + text(p.minValue) + ".." + text(p.maxValue)
-                                : ">= " + text(p.minValue);
-  throw InvalidInputError(std::string(keyword) + " must be " + range + (p.rangeHint.empty() ? "" : " (" + p.rangeHint + ")") +
-                          ", not " + text(value));
+// ---- keyword arguments, by the options table (app/filter_spec.h) --------------------------------
+
+const char* typeWord(app::ParamType t) {
+  switch (t) {
+    case app::ParamType::Bool: return "a bool";
+    case app::ParamType::Int: return "an int";
+    case app::ParamType::Enum: return "a str";
+    case app::ParamType::Float:
+    case app::ParamType::AbsPerc: break;
+  }
+  return "a number";
+}
+
+// The value of keyword `p` as the table stores it (an enum's index; None: not given).
+double keywordValue(const app::ParamSpec& p, const py::handle& value) {
+  try {
+    switch (p.type) {
+      case app::ParamType::Bool: return value.cast<bool>() ? 1 : 0;
+      case app::ParamType::Int: return double(value.cast<long long>());
+      case app::ParamType::Float:
+      case app::ParamType::AbsPerc: return value.cast<double>();
+      case app::ParamType::Enum: {
+        const std::string word = value.cast<std::string>();
+        std::string known;
+        for (std::size_t i = 0; i < p.enumWords.size(); ++i) {
+          if (p.enumWords[i] == word) return double(i);
+          known += (i ? ", " : "") + p.enumWords[i];
+        }
+        throw InvalidInputError(p.keyword + " must be one of " + known + ", not '" + word + "'");
+      }
+    }
+  } catch (const py::cast_error&) {
+  }
+  throw py::type_error(p.keyword + " must be " + typeWord(p.type) + ", not " +
+                       py::str(py::type::of(value).attr("__name__")).cast<std::string>());
+}
+
+// The keyword arguments of `function` (a filter's rows with a keyword, plus the face's own
+// `extra`), each checked against its row's type and range with the error in the caller's words.
+app::ParamValues keywordValues(const char* function, const app::FilterSpec& spec, const py::kwargs& kwargs,
+                               std::initializer_list<const char*> extra) {
+  app::ParamValues values;
+  for (const auto& [k, value] : kwargs) {
+    const std::string key = k.cast<std::string>();
+    const app::ParamSpec* row = nullptr;
+    for (const app::ParamSpec& p : spec.params)
+      if (p.keyword == key) row = &p;
+    if (!row) {
+      if (std::find(extra.begin(), extra.end(), key) != extra.end()) continue;
+      throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" + key + "'");
+    }
+    if (value.is_none()) continue;  // the default
+    const double x = keywordValue(*row, value);
+    app::checkValue(*row, x, app::Caller::Python);
+    values.set(row->key(), x);
+  }
+  return values;
+}
+
+py::object extraKeyword(const py::kwargs& kwargs, const char* name) {
+  return kwargs.contains(name) ? py::reinterpret_borrow<py::object>(kwargs[name]) : py::object(py::none());
+}
+
+// A MeshLab float (stored as float, widened: 0.05 is 0.05000000074505806) as the decimal it was
+// typed as: the shortest one that is the same float.
+double typedDecimal(double widened) {
+  const float f = static_cast<float>(widened);
+  for (int digits = 1; digits <= 9; ++digits) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.*g", digits, widened);
+    const double d = std::strtod(text, nullptr);
+    if (static_cast<float>(d) == f) return d;
+  }
+  return widened;
+}
+
+// A keyword's default as Python writes it: the core's (the CLI's and this module's start).
+std::string pythonDefault(const app::ParamSpec& p) {
+  const double x = p.get(app::JobOptions{});
+  switch (p.type) {
+    case app::ParamType::Bool: return x != 0 ? "True" : "False";
+    case app::ParamType::Enum: return "'" + p.enumWords.at(static_cast<std::size_t>(x)) + "'";
+    case app::ParamType::Int: return std::to_string(static_cast<long long>(x));
+    case app::ParamType::Float:
+    case app::ParamType::AbsPerc: break;
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.9g", x);
+  return text;
+}
+
+// "fair(V, F, selected_faces=None, *, flow='elastica', ...) -> ..." from the table.
+std::string signature(const char* function, const char* positional, app::FilterId id, const char* extra,
+                      const char* returns) {
+  std::string s = std::string(function) + "(" + positional + ", *";
+  for (const app::ParamSpec& p : app::filterSpec(id, {}).params)
+    if (!p.keyword.empty()) s += ", " + p.keyword + "=" + pythonDefault(p);
+  return s + extra + ") -> " + returns + "\n\n";
 }
 
 // ---- the functions --------------------------------------------------------------------------
 
-py::tuple fairArrays(const py::object& V, const py::object& F, const py::object& selectedFaces,
-                     const std::string& flow, const std::optional<std::string>& scheme, int subdivide,
-                     long long maxSteps, double maxSeconds, double featureSize, std::optional<double> energyTol,
-                     bool tangential, const std::string& boundary, bool remesh, bool flipEdges,
-                     const py::object& progress) {
-  using app::FilterId;
-  checkArgument(FilterId::Fairing, "subdivisionLevels", "subdivide", subdivide);
-  checkArgument(FilterId::Fairing, "maxSteps", "max_steps", double(maxSteps));
-  checkArgument(FilterId::Fairing, "maxSeconds", "max_seconds", maxSeconds);
-  if (energyTol) checkArgument(FilterId::Fairing, "energyTolerance", "energy_tol", *energyTol);
-  // The MeshLab parameter is a length (its range has no upper end); here it is a fraction.
-  if (!(featureSize >= 0 && featureSize <= 1))
-    throw InvalidInputError("feature_size must be in 0..1 (a fraction of the bounding-box diagonal), not " +
-                            std::to_string(featureSize));
+py::tuple fairArrays(const py::object& V, const py::object& F, const py::object& selectedFaces, const py::kwargs& kwargs) {
+  const app::FilterSpec spec = app::filterSpec(app::FilterId::Fairing, {});
+  const app::ParamValues values = keywordValues("fair", spec, kwargs, {"progress"});
   TriMesh mesh = toMesh(V, F);
-  app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, app::RepairHints::None);
-  std::vector<std::uint8_t> selection = selectionFrom(selectedFaces, mesh.faceCount());
-  FlowOptions opt;
-  opt.flow = choice<FlowType>("flow", flow);
-  if (scheme) opt.scheme = choice<Scheme>("scheme", *scheme);
-  opt.subdivisionLevels = subdivide;
-  opt.maxSteps = app::stepLimit(maxSteps);
-  opt.maxSeconds = maxSeconds;
-  opt.featureSize = featureSize * boundingBoxDiagonal(mesh.positions);
-  if (energyTol) opt.energyTolerance = *energyTol;
-  opt.tangentialDrift = tangential;
-  opt.boundary = choice<BoundaryMode>("boundary", boundary);
-  opt.remesh = remesh;
-  opt.flipEdges = flipEdges;
-  PythonProgress hook{progress, nullptr};
+  std::optional<FaceSet> region = selectionFrom(selectedFaces, mesh.faceCount());
+  // feature_size is a fraction of the bounding-box diagonal.
+  FlowOptions opt = app::readJob(spec, values, app::Caller::Python, boundingBoxDiagonal(mesh.positions)).flow;
+  PythonProgress hook{extraKeyword(kwargs, "progress"), nullptr};
   opt.progress = hook.hook();
   const int inV = mesh.vertexCount(), inF = mesh.faceCount();
   app::FairingResult r = withoutGil(hook, [&] {
-    return app::runFairing(std::move(mesh), std::move(selection), opt, /*outputCurvature=*/true);
+    return app::runFairing(std::move(mesh), std::move(region), opt, /*outputCurvature=*/true);
   });
   return py::make_tuple(vertexArray(r.mesh), faceArray(r.mesh),
                         toPython(app::fairingReport(r.report, opt, inV, inF, &r)));
 }
 
-py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges, bool closeRims, const std::string& flow,
-                     const std::optional<std::string>& scheme, std::optional<long long> maxSteps, double maxSeconds,
-                     const py::object& progress) {
-  checkArgument(app::FilterId::FillHoles, "MaxHoleSize", "max_hole_edges", maxHoleEdges);
-  if (maxSteps) checkArgument(app::FilterId::FillHoles, "maxSteps", "max_steps", double(*maxSteps));
-  checkArgument(app::FilterId::FillHoles, "maxSeconds", "max_seconds", maxSeconds);
+py::tuple fillArrays(const py::object& V, const py::object& F, const py::kwargs& kwargs) {
+  const app::FilterSpec spec = app::filterSpec(app::FilterId::FillHoles, {});
+  const app::ParamValues values = keywordValues("fill_holes", spec, kwargs, {"progress"});
   TriMesh mesh = toMesh(V, F);
   app::checkFillInput(mesh, app::RepairHints::None);
-  HoleFillOptions opt;
-  opt.maxHoleEdges = maxHoleEdges;
-  opt.closeRims = closeRims;
-  opt.flow.flow = choice<FlowType>("flow", flow);
-  if (scheme) opt.flow.scheme = choice<Scheme>("scheme", *scheme);
-  if (maxSteps) opt.flow.maxSteps = app::stepLimit(*maxSteps);
-  opt.flow.maxSeconds = maxSeconds;
-  PythonProgress hook{progress, nullptr};
+  HoleFillOptions opt = app::readJob(spec, values, app::Caller::Python).fill;
+  PythonProgress hook{extraKeyword(kwargs, "progress"), nullptr};
   opt.flow.progress = hook.hook();
   app::FillHolesResult r = withoutGil(hook, [&] { return app::runFillHoles(std::move(mesh), opt); });
   // fillHoles stops at the hole it was cancelled in: give back nothing rather than a part.
@@ -268,12 +320,12 @@ py::tuple fillArrays(const py::object& V, const py::object& F, int maxHoleEdges,
   return py::make_tuple(vertexArray(r.mesh), faceArray(r.mesh), isNew, toPython(app::fillingReport(r, opt)));
 }
 
-py::dict curvatureArrays(const py::object& V, const py::object& F, const std::string& area, bool lambdaFix) {
+py::dict curvatureArrays(const py::object& V, const py::object& F, const py::kwargs& kwargs) {
+  const app::FilterSpec spec = app::filterSpec(app::FilterId::Curvature, {});
+  const app::ParamValues values = keywordValues("curvature", spec, kwargs, {});
   const TriMesh mesh = toMesh(V, F);
   app::checkedTopology(mesh, /*rejectNonManifoldVertices=*/false, app::RepairHints::None);
-  CurvatureMeasureOptions opt;
-  opt.area = choice<VertexArea>("area", area);
-  opt.curvature.h2k = lambdaFix ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
+  const CurvatureMeasureOptions opt = app::readJob(spec, values, app::Caller::Python).curvature;
   PythonProgress none{py::none(), nullptr};
   const app::CurvatureResult r = withoutGil(none, [&] { return app::runCurvature(mesh, opt); });
   py::dict d;
@@ -298,48 +350,7 @@ void writeFile(const py::object& pathLike, const py::object& V, const py::object
   io::writeMesh(path, mesh, {}, !ascii);  // by extension; atomic: a failed write leaves no half-written file
 }
 
-// ---- the MeshLab filters' parameters, for faces that build dialogs (the Blender add-on) ---------
-
-// The Python keyword argument a filter parameter stands for; "" where the face decides (the
-// selection, colouring, selecting new faces).
-std::string keywordOf(const std::string& parameter) {
-  static const std::map<std::string, std::string> keywords = {
-      {"flow", "flow"},           {"scheme", "scheme"},         {"maxSteps", "max_steps"}, {"maxSeconds", "max_seconds"},
-      {"subdivisionLevels", "subdivide"}, {"energyTolerance", "energy_tol"}, {"tangentialDrift", "tangential"},
-      {"featureSize", "feature_size"},
-      {"boundary", "boundary"},   {"MaxHoleSize", "max_hole_edges"}, {"CloseRims", "close_rims"}, {"lambdaFix", "lambda_fix"},
-      {"area", "area"}};
-  const auto it = keywords.find(parameter);
-  return it == keywords.end() ? std::string() : it->second;
-}
-
-// The command-line words of a RichEnum's entries: the choices table whose labels they are.
-template <class E>
-bool wordsOf(const std::vector<std::string>& labels, std::vector<std::string>& words) {
-  if (app::labels<E>() != labels) return false;
-  for (const app::Choice<E>& c : app::choices<E>()) words.emplace_back(c.name);
-  return true;
-}
-std::vector<std::string> enumWords(const std::vector<std::string>& labels) {
-  std::vector<std::string> w;
-  if (wordsOf<FlowType>(labels, w) || wordsOf<Scheme>(labels, w) || wordsOf<BoundaryMode>(labels, w) ||
-      wordsOf<VertexArea>(labels, w) || wordsOf<H2KTreatment>(labels, w))
-    return w;
-  throw std::logic_error("no choices table for a RichEnum");  // a filter_spec.cpp change without one
-}
-
-// A MeshLab float (stored as float, widened: 0.05 is 0.05000000074505806) as the decimal it was
-// typed as: the shortest one that is the same float.
-double typedDecimal(double widened) {
-  const float f = static_cast<float>(widened);
-  for (int digits = 1; digits <= 9; ++digits) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.*g", digits, widened);
-    const double d = std::strtod(text, nullptr);
-    if (static_cast<float>(d) == f) return d;
-  }
-  return widened;
-}
+// ---- the options table, for faces that build dialogs (the Blender add-on) ----------------------
 
 py::dict filterSpecs() {
   static const std::map<app::FilterId, const char*> function = {
@@ -351,11 +362,14 @@ py::dict filterSpecs() {
   unitDiagonal.diagonal = 1;
   for (const app::FilterSpec& f : app::allFilters(unitDiagonal)) {
     py::list params;
+    auto orNone = [](const std::string& s) { return s.empty() ? py::object(py::none()) : py::object(py::str(s)); };
     for (const app::ParamSpec& p : f.params) {
       py::dict d;
-      d["name"] = p.name;
-      const std::string keyword = keywordOf(p.name);
-      d["keyword"] = keyword.empty() ? py::object(py::none()) : py::object(py::str(keyword));
+      d["name"] = orNone(p.name);
+      d["field"] = p.field;
+      d["keyword"] = orNone(p.keyword);
+      d["blender"] = orNone(p.blenderProperty);
+      d["cli"] = orNone(p.cliFlag);
       d["label"] = p.label;
       d["description"] = p.tooltip;
       d["rich_type"] = app::richTypeName(p.type);  // the .mlx type
@@ -368,28 +382,27 @@ py::dict filterSpecs() {
           d["type"] = "int";
           d["default"] = static_cast<long long>(p.defaultValue);
           break;
-        case app::ParamType::Float:
+        case app::ParamType::Float:  // MeshLab's are floats: shown as typed
           d["type"] = "float";
-          d["default"] = typedDecimal(p.defaultValue);
+          d["default"] = p.inMeshLab() ? typedDecimal(p.defaultValue) : p.defaultValue;
           break;
         case app::ParamType::AbsPerc:  // a fraction of the bounding-box diagonal here
           d["type"] = "float";
           d["default"] = typedDecimal(p.defaultValue);
           d["description"] = p.tooltip + " A fraction of the bounding-box diagonal.";
           break;
-        case app::ParamType::Enum: {
+        case app::ParamType::Enum:
           d["type"] = "enum";
-          const std::vector<std::string> words = enumWords(p.enumValues);
-          d["choices"] = words;
+          d["choices"] = p.enumWords;
           d["labels"] = p.enumValues;
-          d["default"] = words.at(static_cast<std::size_t>(p.defaultValue));
+          d["default"] = p.enumWords.at(static_cast<std::size_t>(p.defaultValue));
           break;
-        }
       }
       auto bound = [](double x) { return std::isfinite(x) ? py::object(py::float_(x)) : py::object(py::none()); };
       if (p.type == app::ParamType::Int || p.type == app::ParamType::Float) {
-        d["min"] = bound(p.minValue);
+        d["min"] = bound(p.minValue);  // with min_exclusive, the minimum itself is refused
         d["max"] = bound(p.maxValue);
+        d["min_exclusive"] = p.minExclusive;
       }
       if (p.type == app::ParamType::AbsPerc) {
         d["min"] = 0.0;
@@ -445,51 +458,40 @@ PYBIND11_MODULE(elastica, m) {
     }
   });
 
-  const FlowOptions flowDefaults;
-  const HoleFillOptions fillDefaults;
-  m.def("fair", &fairArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(), py::kw_only(),
-        py::arg("flow") = app::nameOf(flowDefaults.flow), py::arg("scheme") = py::none(), py::arg("subdivide") = 0,
-        py::arg("max_steps") = flowDefaults.maxSteps, py::arg("max_seconds") = 0.0, py::arg("feature_size") = 0.0,
-        py::arg("energy_tol") = py::none(), py::arg("tangential") = true,
-        py::arg("boundary") = app::nameOf(flowDefaults.boundary), py::arg("remesh") = flowDefaults.remesh,
-        py::arg("flip_edges") = flowDefaults.flipEdges, py::arg("progress") = py::none(),
-        (std::string("fair(V, F, selected_faces=None, *, flow='elastica', scheme=None, subdivide=0, max_steps=") +
-         std::to_string(flowDefaults.maxSteps) +
-         ", max_seconds=0, feature_size=0, energy_tol=None, tangential=True,\n     boundary='fixed',"
-         " remesh=True, flip_edges=False, progress=None) -> (V_out, F_out, report)\n\n"
+  // The keyword arguments, their defaults (the core's) and the signatures below come from the
+  // options table (app/filter_spec.h); an unknown keyword raises TypeError, None takes the default.
+  m.def("fair", &fairArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(),
+        (signature("fair", "V, F, selected_faces=None", app::FilterId::Fairing, ", progress=None",
+                   "(V_out, F_out, report)") +
          "Fairs the mesh with a curvature flow, as `elastica fair`: flow 'elastica' (F = -Lap H - 2H(H^2-K)),\n"
-         "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto' (None: the core's default, '" +
-         app::nameOf(flowDefaults.scheme) +
-         "');\n"
+         "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto';\n"
          "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_steps and max_seconds 0: no limit;\n"
          "feature_size: a fairing amount, a fraction of the bounding-box diagonal (bumps smaller than it are\n"
-         "smoothed away, larger shapes kept; report['stop'] 'feature_size'), 0: fair until converged; energy_tol None: the\n"
-         "default; boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
+         "smoothed away, larger shapes kept; report['stop'] 'feature_size'), 0: fair until converged;\n"
+         "boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
          "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
          "guard), so F_out may differ from F; False keeps the connectivity (`--no-remesh`). flip_edges: flip\n"
-         "non-Delaunay edges at every check (`--remesh`). selected_faces: face indices\n"
-         "or a bool mask; only vertices whose faces are all selected move. progress(dict) -> bool is called at\n"
-         "every check with level, step, energy, lambda, seconds; return False to cancel (raises elastica.Error).\n"
-         "report: the dict `elastica fair --report` writes (without file names).")
+         "non-Delaunay edges at every check (`--flip-edges`). A keyword given as None takes its default.\n"
+         "selected_faces: face indices or a bool mask; only vertices whose faces are all selected move.\n"
+         "progress(dict) -> bool is called at every check with level, step, energy, lambda, seconds; return\n"
+         "False to cancel (raises elastica.Error). report: the dict `elastica fair --report` writes (without\n"
+         "file names).")
             .c_str());
-  m.def("fill_holes", &fillArrays, py::arg("V"), py::arg("F"), py::kw_only(),
-        py::arg("max_hole_edges") = fillDefaults.maxHoleEdges, py::arg("close_rims") = fillDefaults.closeRims,
-        py::arg("flow") = app::nameOf(fillDefaults.flow.flow),
-        py::arg("scheme") = py::none(), py::arg("max_steps") = py::none(), py::arg("max_seconds") = 0.0,
-        py::arg("progress") = py::none(),
-        "fill_holes(V, F, *, max_hole_edges=500, close_rims=False, flow='elastica', scheme=None, max_steps=None,\n"
-        "           max_seconds=0, progress=None) -> (V_out, F_out, new_faces, report)\n\n"
-        "Fills every hole with at most max_hole_edges border edges, as `elastica fill`; an open surface's outer\n"
-        "rim stays open unless close_rims (report['holes'][i]['rim'] tells which loops are rims). The input's vertices\n"
-        "and faces come first, unchanged, and new_faces is True on the appended patch faces. scheme None: the\n"
-        "fill's default (semi-implicit); max_steps None: the default budget. report: the dict\n"
-        "`elastica fill --report` writes (without file names).");
-  m.def("curvature", &curvatureArrays, py::arg("V"), py::arg("F"), py::kw_only(),
-        py::arg("area") = app::nameOf(VertexArea::Mixed), py::arg("lambda_fix") = false,
-        "curvature(V, F, *, area='mixed', lambda_fix=False) -> {'H': array, 'K': array, 'energy': float}\n\n"
-        "Per-vertex mean curvature H (+1/r on a sphere with outward normals; H/lambda where the paper's lambda\n"
-        "fix applies), angle-deficit Gaussian curvature K, and the total curvature energy E = sum (4H^2 - 2K) A,\n"
-        "as `elastica curvature`. area: 'mixed' (Meyer et al.) or 'barycentric' (the paper's A/3).");
+  m.def("fill_holes", &fillArrays, py::arg("V"), py::arg("F"),
+        (signature("fill_holes", "V, F", app::FilterId::FillHoles, ", progress=None",
+                   "(V_out, F_out, new_faces, report)") +
+         "Fills every hole with at most max_hole_edges border edges, as `elastica fill`; an open surface's outer\n"
+         "rim stays open unless close_rims (report['holes'][i]['rim'] tells which loops are rims). The input's\n"
+         "vertices and faces come first, unchanged, and new_faces is True on the appended patch faces. max_steps\n"
+         "bounds the whole fill (the holes' flows share it). A keyword given as None takes its default.\n"
+         "report: the dict `elastica fill --report` writes (without file names).")
+            .c_str());
+  m.def("curvature", &curvatureArrays, py::arg("V"), py::arg("F"),
+        (signature("curvature", "V, F", app::FilterId::Curvature, "", "{'H': array, 'K': array, 'energy': float}") +
+         "Per-vertex mean curvature H (+1/r on a sphere with outward normals; H/lambda where the paper's lambda\n"
+         "fix applies), angle-deficit Gaussian curvature K, and the total curvature energy E = sum (4H^2 - 2K) A,\n"
+         "as `elastica curvature`. area: 'mixed' (Meyer et al.) or 'barycentric' (the paper's A/3).")
+            .c_str());
   m.def("read", &readFile, py::arg("path"),
         "read(path) -> (V, F)\n\nReads PLY, OFF, STL or OBJ with the `elastica` command's reader: polygons split,\n"
         "STL corners merged, degenerate and duplicate faces removed, bow-tie vertices split; a malformed file\n"
@@ -500,10 +502,12 @@ PYBIND11_MODULE(elastica, m) {
         "raises elastica.IoError.");
   m.def("filters", &filterSpecs,
         "filters() -> {'fair': spec, 'fill_holes': spec, 'curvature': spec}\n\n"
-        "The MeshLab filters' parameters, for a face that builds a dialog (the Blender add-on): each spec has\n"
-        "the filter's 'name' and 'info' (HTML) and 'parameters', a list of dicts with 'name' (the .mlx name),\n"
-        "'keyword' (this module's keyword argument, or None where the caller decides: the selection, colouring,\n"
-        "selecting new faces), 'type' ('bool', 'int', 'float', 'enum'), 'default', 'label', 'description', for\n"
-        "numbers 'min' and 'max' (None: unbounded), for enums 'choices' (keyword values) and 'labels' (menu).\n"
-        "Passing every keyword at its default runs what the MeshLab filter runs at its defaults.");
+        "The options table, for a face that builds a dialog (the Blender add-on): each spec has the filter's\n"
+        "'name' and 'info' (HTML) and 'parameters', one dict per row: 'name' (the .mlx name, None where MeshLab\n"
+        "has no such parameter), 'field' (the C++ options field), 'keyword' (this module's keyword argument, or\n"
+        "None where the caller decides: the selection, colouring, selecting new faces), 'blender' (the Blender\n"
+        "property, or None), 'cli' (the command-line flag, or None), 'type' ('bool', 'int', 'float', 'enum'),\n"
+        "'default' (the dialogs'), 'label', 'description', for numbers 'min' and 'max' (None: unbounded), for\n"
+        "enums 'choices' (keyword values) and 'labels' (menu). Passing every keyword of the MeshLab parameters at\n"
+        "its default runs what the MeshLab filter runs at its defaults.");
 }

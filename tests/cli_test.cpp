@@ -3,6 +3,7 @@
 #include "run_elastica.h"
 #include "shape_measures.h"
 
+#include <elastica/app/filter_spec.h>
 #include <elastica/curvature.h>
 #include <elastica/energy.h>
 #include <elastica/io/mesh_reader.h>
@@ -434,6 +435,43 @@ TEST(Cli, FlagsCheckTheParametersRanges) {
     EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << ": " << r.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("out.ply"))) << c.args;
   }
+}
+
+}  // namespace elastica
+
+namespace elastica {
+
+// The options are the table's (app/filter_spec.h): every row with a CLI flag is an option of its
+// command, listed in --help with the row's help (and its older spelling, if any); a number out of
+// the row's range and a word not in an enum's table are refused at parsing (exit 2) naming the flag.
+TEST(Cli, OptionsAreTheTablesRows) {
+  ScratchDir dir("cli-table");
+  const std::string bunny = std::string(ELASTICA_DATA_DIR) + "/bunny_flank_hole.ply";
+  const std::pair<app::FilterId, std::string> commands[] = {
+      {app::FilterId::Fairing, "fair"}, {app::FilterId::FillHoles, "fill"}, {app::FilterId::Curvature, "curvature"}};
+  int checked = 0;
+  for (const auto& [id, command] : commands) {
+    const CommandResult help = runElastica(command + " --help");
+    ASSERT_EQ(help.exitCode, 0);
+    for (const app::ParamSpec& p : app::filterSpec(id, {}).params) {
+      if (p.cliFlag.empty()) continue;
+      SCOPED_TRACE(command + " " + p.cliFlag);
+      const std::string names = p.cliAlias.empty() ? p.cliFlag : p.cliFlag + "," + p.cliAlias;
+      EXPECT_NE(help.output.find("  " + names + " "), std::string::npos) << help.output;
+      const std::string text = (p.cliHelp.empty() ? p.tooltip : p.cliHelp).substr(0, 40);
+      EXPECT_NE(help.output.find(text), std::string::npos) << text;
+      std::string bad;
+      if (p.type == app::ParamType::Enum) bad = "bogus";
+      else if (p.type != app::ParamType::Bool) bad = "-1";
+      if (bad.empty()) continue;
+      const CommandResult r = runElastica(command + " " + bunny + " -o " + dir.file("out.ply") + " " + p.cliFlag + " " + bad);
+      EXPECT_EQ(r.exitCode, 2) << r.output;
+      EXPECT_NE(r.output.find(p.cliFlag + ": "), std::string::npos) << r.output;
+      EXPECT_FALSE(std::filesystem::exists(dir.file("out.ply")));
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 20);
 }
 
 }  // namespace elastica

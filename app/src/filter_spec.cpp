@@ -1,8 +1,11 @@
 #include <elastica/app/choices.h>
+#include <elastica/app/filter_run.h>
 #include <elastica/app/filter_spec.h>
 #include <elastica/errors.h>
-#include <elastica/flow.h>
-#include <elastica/hole_filling.h>
+
+#include <cmath>
+#include <cstdio>
+#include <type_traits>
 
 namespace elastica::app {
 namespace {
@@ -11,70 +14,168 @@ const char* kReference =
     "<br><br>See: <i>S. Yoshizawa, A. G. Belyaev</i>, <b>\"Fair Triangle Mesh Generation with Discrete "
     "Elastica\"</b>, Geometric Modeling and Processing 2002, pp. 119-123.";
 
-ParamSpec param(std::string name, ParamType type, double value, std::string label, std::string tooltip) {
-  ParamSpec p;
-  p.name = std::move(name);
-  p.type = type;
-  p.defaultValue = value;
-  p.label = std::move(label);
-  p.tooltip = std::move(tooltip);
-  return p;
-}
-ParamSpec boolParam(std::string name, bool value, std::string label, std::string tooltip) {
-  return param(std::move(name), ParamType::Bool, value ? 1.0 : 0.0, std::move(label), std::move(tooltip));
-}
-ParamSpec intParam(std::string name, int value, std::string label, std::string tooltip, double lo, double hi,
-                   std::string hint = {}) {
-  ParamSpec p = param(std::move(name), ParamType::Int, double(value), std::move(label), std::move(tooltip));
-  p.minValue = lo;
-  p.maxValue = hi;
-  p.rangeHint = std::move(hint);
-  return p;
-}
-ParamSpec floatParam(std::string name, float value, std::string label, std::string tooltip, double lo) {
-  ParamSpec p = param(std::move(name), ParamType::Float, double(value), std::move(label), std::move(tooltip));
-  p.minValue = lo;
-  return p;
-}
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
-// The time limit's default: the default scheme converges on the 1,839-vertex bunny in
-// seconds; a run that needs a minute is better stopped and reported than left to freeze MeshLab.
-constexpr float kDefaultMaxSeconds = 60;
-ParamSpec absPercParam(std::string name, double fraction, double diagonal, std::string label, std::string tooltip) {
-  ParamSpec p = param(std::move(name), ParamType::AbsPerc, fraction * diagonal, std::move(label), std::move(tooltip));
-  p.minValue = 0;
-  return p;
-}
-ParamSpec enumParam(std::string name, int value, std::vector<std::string> values, std::string label,
-                    std::string tooltip) {
-  ParamSpec p = param(std::move(name), ParamType::Enum, double(value), std::move(label), std::move(tooltip));
-  p.enumValues = std::move(values);
+// The dialogs' time limit: the default scheme converges on the 1,839-vertex bunny in seconds; a
+// run that needs a minute is better stopped and reported than left to freeze MeshLab (which
+// cannot cancel a running filter) or Blender.
+constexpr float kDialogMaxSeconds = 60;
+
+// ---- building rows ------------------------------------------------------------------------------
+// `access` is a generic lambda returning the field of a JobOptions, const or not:
+// [](auto& j) -> auto& { return j.flow.maxSteps; }.
+
+struct Names {
+  const char* mlx;      // "" where MeshLab has no such parameter
+  const char* cli;
+  const char* keyword;
+  const char* blender;
+};
+
+ParamSpec blankRow(ParamType type, std::string field, Names n) {
+  ParamSpec p;
+  p.type = type;
+  p.field = std::move(field);
+  p.name = n.mlx;
+  p.cliFlag = n.cli;
+  p.keyword = n.keyword;
+  p.blenderProperty = n.blender;
   return p;
 }
 
-// The flow and scheme choices, shared by every filter that runs a flow (index order is the .mlx
-// value: append only).
-ParamSpec flowParam() {
-  return enumParam("flow", 0, labels<FlowType>(), "Flow",
-                   "Elastica: round (Willmore) surfaces. Laplacian of H: keeps the volume. Bilaplacian: shrinks.");
+template <class Access>
+ParamSpec row(ParamType type, std::string field, Names n, Access access) {
+  ParamSpec p = blankRow(type, std::move(field), n);
+  p.set = [access](JobOptions& j, double x) {
+    auto& f = access(j);
+    f = static_cast<std::decay_t<decltype(f)>>(x);
+  };
+  p.get = [access](const JobOptions& j) { return static_cast<double>(access(j)); };
+  p.defaultValue = p.get(JobOptions{});
+  if (type == ParamType::Float && p.inMeshLab()) p.defaultValue = double(float(p.defaultValue));  // a RichFloat
+  return p;
 }
-ParamSpec schemeParam(Scheme defaultScheme) {
-  return enumParam("scheme", indexOf(defaultScheme), labels<Scheme>(), "Time integration",
-                   "Automatic: Vector, or Semi-implicit on coarse meshes with handles. Explicit: the paper's tiny "
-                   "steps.");
+
+ParamSpec& help(ParamSpec& p, std::string label, std::string tooltip, std::string cliHelp = {}) {
+  p.label = std::move(label);
+  p.tooltip = std::move(tooltip);
+  p.cliHelp = std::move(cliHelp);
+  return p;
 }
-ParamSpec maxStepsParam() {
-  return intParam("maxSteps", 0, "Maximum steps",
-                  "Over all stages; 0: no limit (the flow stops at its plateau first).",
-                  0, kUnbounded);
+
+template <class Access>
+ParamSpec boolRow(std::string field, Names n, Access access, std::string label, std::string tooltip,
+                  std::string cliHelp = {}) {
+  ParamSpec p = row(ParamType::Bool, std::move(field), n, access);
+  return help(p, std::move(label), std::move(tooltip), std::move(cliHelp));
 }
-// The wall-time limit: MeshLab 2020.09 cannot cancel a running filter (its progress callback
-// always answers "go on"), so this bounds how long a run keeps MeshLab busy.
-ParamSpec maxSecondsParam() {
-  return floatParam("maxSeconds", kDefaultMaxSeconds, "Time limit (s)",
-                    "Then stop and keep the result, with a warning; 0: no limit. (MeshLab cannot cancel a "
-                    "running filter.)",
-                    0);
+
+template <class Access>
+ParamSpec numberRow(ParamType type, std::string field, Names n, Access access, double lo, double hi, std::string label,
+                    std::string tooltip, std::string cliHelp = {}) {
+  ParamSpec p = row(type, std::move(field), n, access);
+  p.minValue = lo;
+  p.maxValue = hi;
+  return help(p, std::move(label), std::move(tooltip), std::move(cliHelp));
+}
+
+template <class E, class Access>
+ParamSpec enumRow(std::string field, Names n, Access access, std::string label, std::string tooltip,
+                  std::string cliHelp = {}) {
+  ParamSpec p = blankRow(ParamType::Enum, std::move(field), n);
+  for (const Choice<E>& c : choices<E>()) {
+    p.enumValues.emplace_back(c.label);
+    p.enumWords.emplace_back(c.name);
+  }
+  p.set = [access](JobOptions& j, double x) { access(j) = choices<E>()[static_cast<std::size_t>(x)].value; };
+  p.get = [access](const JobOptions& j) { return double(indexOf(access(j))); };
+  p.defaultValue = p.get(JobOptions{});
+  p.minValue = 0;
+  p.maxValue = double(choices<E>().size() - 1);
+  return help(p, std::move(label), std::move(tooltip), std::move(cliHelp));
+}
+
+// ---- the rows every flow has (fairing: j.flow; fill: j.fill.flow) ------------------------------
+
+template <class Flow>
+std::vector<ParamSpec> flowRows(const std::string& prefix, Flow flow) {
+  std::vector<ParamSpec> rows;
+  rows.push_back(enumRow<FlowType>(
+      prefix + "flow", {"flow", "--flow", "flow", "flow"}, [flow](auto& j) -> auto& { return flow(j).flow; }, "Flow",
+      "Elastica: round (Willmore) surfaces. Laplacian of H: keeps the volume. Bilaplacian: shrinks.",
+      "elastica (default: F = -Lap H - 2H(H^2-K)), lmc (F = -Lap H) or bilaplacian (P -= tau U0^2 P)"));
+  rows.push_back(enumRow<Scheme>(
+      prefix + "scheme", {"scheme", "--scheme", "scheme", "scheme"}, [flow](auto& j) -> auto& { return flow(j).scheme; },
+      "Time integration",
+      "Automatic: Vector, or Semi-implicit on coarse meshes with handles. Explicit: the paper's tiny steps.",
+      "auto (fair's default: vector, or semi-implicit on meshes with handles and under 1500 vertices per "
+      "handle), vector (implicit in the positions, adaptive steps that move vertices tangentially too, with "
+      "remeshing), semi-implicit (fill's default: implicit in the 4th-order part, normal moves) or explicit "
+      "(the paper's step; the bilaplacian flow's only scheme)"));
+  // 0 is "no limit" on every face (the core's field takes the largest count instead).
+  ParamSpec steps = numberRow(
+      ParamType::Int, prefix + "maxSteps", {"maxSteps", "--max-steps", "max_steps", "max_steps"},
+      [flow](auto& j) -> auto& { return flow(j).maxSteps; }, 0, kUnbounded, "Maximum steps",
+      "Over all stages; 0: no limit (the flow stops at its plateau first).", "step limit over all stages (0: no limit)");
+  steps.set = [flow](JobOptions& j, double x) { flow(j).maxSteps = stepLimit(static_cast<long long>(x)); };
+  steps.get = [flow](const JobOptions& j) {
+    const long long n = flow(j).maxSteps;
+    return n == std::numeric_limits<long long>::max() ? 0.0 : double(n);
+  };
+  steps.defaultValue = 0;  // the dialogs: no step limit (the time limit bounds a run)
+  rows.push_back(steps);
+  ParamSpec seconds = numberRow(
+      ParamType::Float, prefix + "maxSeconds", {"maxSeconds", "--max-seconds", "max_seconds", "max_seconds"},
+      [flow](auto& j) -> auto& { return flow(j).maxSeconds; }, 0, kUnbounded, "Time limit (s)",
+      "Then stop and keep the result, with a warning; 0: no limit. (MeshLab cannot cancel a running filter.)",
+      "wall-time limit (0: none)");
+  seconds.defaultValue = kDialogMaxSeconds;
+  rows.push_back(seconds);
+  return rows;
+}
+
+// The flow's tolerances and the explicit scheme's knobs, the CLI's only (and the fairing dialog's
+// energy tolerance and tangential drift when `inDialog`).
+template <class Flow>
+std::vector<ParamSpec> flowTuningRows(const std::string& prefix, Flow flow, bool inDialog) {
+  std::vector<ParamSpec> rows;
+  rows.push_back(numberRow(
+      ParamType::Float, prefix + "energyTolerance",
+      {inDialog ? "energyTolerance" : "", "--energy-tol", inDialog ? "energy_tol" : "", inDialog ? "energy_tol" : ""},
+      [flow](auto& j) -> auto& { return flow(j).energyTolerance; }, 0, kUnbounded, "Energy tolerance",
+      "Stop when the energy's relative change per unit of normalised time is below this.",
+      "stop when the relative energy change per unit of normalised time t/A^2 is below this"));
+  rows.push_back(numberRow(
+      ParamType::Float, prefix + "shapeTolerance", {"", "--shape-tol", "", ""},
+      [flow](auto& j) -> auto& { return flow(j).shapeTolerance; }, 0, kUnbounded, "Shape tolerance",
+      "Semi-implicit scheme: also stop once a step at the scale of the moving region moves no vertex along its "
+      "normal by more than this times the mean edge length (0: off).",
+      "semi-implicit scheme only: also stop once a step at the scale of the moving region moves no vertex along its "
+      "normal by more than this times the mean edge length (fill's default 1e-3; fair's 0: off)"));
+  rows.push_back(boolRow(
+      prefix + "tangentialDrift",
+      {inDialog ? "tangentialDrift" : "", "--no-tangential", inDialog ? "tangential" : "", inDialog ? "tangential" : ""},
+      [flow](auto& j) -> auto& { return flow(j).tangentialDrift; }, "Tangential drift",
+      "Explicit: the paper's drift each step. Semi-implicit: 2 passes a step. Vector: none.",
+      "disable the tangential drift that keeps triangles even"));
+  rows.push_back(enumRow<H2KTreatment>(
+      prefix + "curvature.h2k", {"", "--h2k", "", ""}, [flow](auto& j) -> auto& { return flow(j).curvature.h2k; },
+      "Where H^2 - K is below 0", "Clamp H^2 - K at 0, or the paper's lambda rescaling of H (guarded).",
+      "H^2-K < 0: clamp (default) or lambda (the paper's rescaling, guarded)"));
+  rows.push_back(enumRow<VertexArea>(
+      prefix + "area", {"", "--area", "", ""}, [flow](auto& j) -> auto& { return flow(j).area; }, "Vertex area",
+      "Mixed: Meyer et al.'s Voronoi area. Barycentric: the paper's A/3.",
+      "vertex area: mixed (default) or barycentric (the paper's A/3)"));
+  ParamSpec step = numberRow(ParamType::Float, prefix + "stepFactor", {"", "--step-factor", "", ""},
+                             [flow](auto& j) -> auto& { return flow(j).stepFactor; }, 0, kUnbounded, "Step factor",
+                             "Explicit scheme: the step is this times the smallest vertex area squared (paper: 1/150).",
+                             "explicit step tau = factor * A_min^2 (paper: 1/150)");
+  step.minExclusive = true;
+  rows.push_back(step);
+  return rows;
+}
+
+void append(std::vector<ParamSpec>& to, std::vector<ParamSpec> rows) {
+  for (ParamSpec& p : rows) to.push_back(std::move(p));
 }
 
 FilterSpec fairing(const MeshFacts& mesh) {
@@ -86,33 +187,61 @@ FilterSpec fairing(const MeshFacts& mesh) {
                "&int;(k<sub>1</sub><sup>2</sup> + k<sub>2</sub><sup>2</sup>) dA (normal speed "
                "F = -&Delta;<sub>B</sub>H - 2H(H<sup>2</sup> - K)), toward round, fair surfaces.") +
            kReference;
-  s.params = {
-      flowParam(),
-      schemeParam(FlowOptions{}.scheme),
-      maxStepsParam(),
-      maxSecondsParam(),
-      absPercParam("featureSize", 0, mesh.diagonal, "Feature size",
-                   "Smooth away bumps smaller than this, keep larger shapes. 0: fair until converged."),
-      intParam("subdivisionLevels", 0, "Subdivision levels",
-               "Coarse to fine: 1-to-4 splits, each near steady state (of the selection, if selected).",
-               0, 8),
-      floatParam("energyTolerance", float(FlowOptions{}.energyTolerance), "Energy tolerance",
-                 "Stop when the energy's relative change per unit of normalised time is below this.",
-                 0),
-      boolParam("tangentialDrift", true, "Tangential drift",
-                "Explicit: the paper's drift each step. Semi-implicit: 2 passes a step. Vector: none."),
-      enumParam("boundary", indexOf(FlowOptions{}.boundary), labels<BoundaryMode>(), "Boundary",
-                "Fixed: the boundary and the next ring stay put (G1). Slide: the boundary slides along itself."),
-      boolParam("Selected", mesh.selectedFaces > 0, "Affect only selected faces",
-                "Only vertices whose faces are all selected move; two rings around them stay fixed."),
-      boolParam("colorByMeanCurvature", false, "Colour by mean curvature",
-                "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high)."),
-  };
+  auto flow = [](auto& j) -> auto& { return j.flow; };
+  std::vector<ParamSpec>& p = s.params;
+  append(p, flowRows("flow.", flow));
+  ParamSpec feature = numberRow(
+      ParamType::AbsPerc, "flow.featureSize", {"featureSize", "--feature-size", "feature_size", "feature_size"},
+      [](auto& j) -> auto& { return j.flow.featureSize; }, 0, kUnbounded, "Feature size",
+      "Smooth away bumps smaller than this, keep larger shapes. 0: fair until converged.",
+      "a fairing amount: smooth away bumps smaller than this fraction of the bounding-box diagonal (e.g. 0.03), keep "
+      "larger shapes, then stop (default 0: fair until converged)");
+  p.push_back(feature);
+  p.push_back(numberRow(
+      ParamType::Int, "flow.subdivisionLevels", {"subdivisionLevels", "--subdivide", "subdivide", "subdivide"},
+      [](auto& j) -> auto& { return j.flow.subdivisionLevels; }, 0, 8, "Subdivision levels",
+      "Coarse to fine: 1-to-4 splits, each near steady state (of the selection, if selected).",
+      "coarse-to-fine: 1-to-4 subdivisions, each when the flow is near steady state (with a selection, of the "
+      "selected faces only)"));
+  p.push_back(numberRow(ParamType::Float, "flow.targetEdgeLength", {"", "--target-edge", "", ""},
+                        [](auto& j) -> auto& { return j.flow.targetEdgeLength; }, 0, kUnbounded, "Target edge length",
+                        "Stop subdividing once the mean edge length is at most this (0: no target).",
+                        "stop subdividing once the mean edge length is at most this"));
+  append(p, flowTuningRows("flow.", flow, /*inDialog=*/true));
+  ParamSpec flips = boolRow("flow.flipEdges", {"", "--flip-edges", "flip_edges", ""},
+                      [](auto& j) -> auto& { return j.flow.flipEdges; }, "Flip edges",
+                      "Explicit scheme: dynamic connectivity, flip non-Delaunay edges among moving vertices at every check.",
+                      "explicit scheme: dynamic connectivity, flip non-Delaunay edges among moving vertices at every "
+                      "check (the vector and semi-implicit schemes do this and more unless --no-remesh)");
+  flips.cliAlias = "--remesh";  // its first spelling, still taken
+  p.push_back(flips);
+  p.push_back(boolRow("flow.remesh", {"", "--no-remesh", "remesh", ""}, [](auto& j) -> auto& { return j.flow.remesh; },
+                      "Remesh",
+                      "Vector and semi-implicit schemes: the mesh-quality stages (working-resolution floor, "
+                      "isotropic and curvature-adaptive remeshing, edge flips, embedding guard); off keeps the "
+                      "connectivity.",
+                      "vector and semi-implicit schemes: keep the connectivity (no working-resolution floor, no "
+                      "isotropic or curvature-adaptive remeshing, no edge flips, no embedding guard)"));
+  p.push_back(enumRow<BoundaryMode>(
+      "flow.boundary", {"boundary", "--boundary", "boundary", "boundary"}, [](auto& j) -> auto& { return j.flow.boundary; },
+      "Boundary", "Fixed: the boundary and the next ring stay put (G1). Slide: the boundary slides along itself.",
+      "fixed (default: boundary and next row clamped, G1) or slide (boundary vertices slide along it)"));
+  ParamSpec selected = boolRow(
+      "selected", {"Selected", "--selected", "", ""}, [](auto& j) -> auto& { return j.selected; },
+      "Affect only selected faces", "Only vertices whose faces are all selected move; two rings around them stay fixed.",
+      "fair only the selected faces (PLY face flags, as MeshLab saves its selection, or a face property 'selected'); "
+      "two rings around stay fixed");
+  selected.defaultValue = mesh.selectedFaces > 0;  // MeshLab's idiom: on when the mesh has a selection
+  p.push_back(selected);
+  p.push_back(boolRow("colorByMeanCurvature",
+                      {"colorByMeanCurvature", "--color-by-mean-curvature", "", "color_by_mean_curvature"},
+                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by mean curvature",
+                      "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high).",
+                      "colour vertices by H (red low, blue high)"));
   return s;
 }
 
 FilterSpec fillHoles() {
-  const HoleFillOptions defaults;
   FilterSpec s;
   s.id = FilterId::FillHoles;
   s.name = "Fill Holes with Discrete Elastica";
@@ -123,21 +252,42 @@ FilterSpec fillHoles() {
                "of the total curvature) while two rings of the surrounding mesh stay fixed, so that it joins "
                "with continuous tangent planes (G1) and continues the surface's curvature.") +
            kReference;
-  s.params = {
-      intParam("MaxHoleSize", defaults.maxHoleEdges, "Max size to be closed",
-               "Holes with more border edges than this stay open (counted as in MeshLab's Close Holes).",
-               3, kUnbounded, "a hole has 3 edges or more"),
-      boolParam("CloseRims", defaults.closeRims, "Close rims too",
-                "Off: the outer rim of an open surface (a scan's outline: a border that turns like an outline and "
-                "spans a quarter or more of its piece's area) stays open and only the holes inside are filled. "
-                "On: rims are closed too."),
-      flowParam(),
-      schemeParam(defaults.flow.scheme),
-      maxStepsParam(),
-      maxSecondsParam(),
-      boolParam("NewFaceSelected", true, "Select the newly created faces",
-                "Afterwards only the new faces are selected (with no hole filled, the selection stays)."),
-  };
+  std::vector<ParamSpec>& p = s.params;
+  ParamSpec size = numberRow(
+      ParamType::Int, "fill.maxHoleEdges", {"MaxHoleSize", "--max-hole-edges", "max_hole_edges", "max_hole_edges"},
+      [](auto& j) -> auto& { return j.fill.maxHoleEdges; }, 3, kUnbounded, "Max size to be closed",
+      "Holes with more border edges than this stay open (counted as in MeshLab's Close Holes).",
+      "fill holes with at most this many border edges");
+  size.rangeHint = "a hole has 3 edges or more";
+  p.push_back(size);
+  p.push_back(boolRow("fill.closeRims", {"CloseRims", "--close-rims", "close_rims", "close_rims"},
+                      [](auto& j) -> auto& { return j.fill.closeRims; }, "Close rims too",
+                      "Off: the outer rim of an open surface (a scan's outline: a border that turns like an outline "
+                      "and spans a quarter or more of its piece's area) stays open and only the holes inside are "
+                      "filled. On: rims are closed too.",
+                      "also close the outer rims of open surfaces (by default a scan's outline stays open: a border "
+                      "that turns like an outline and spans a quarter or more of its piece's area; "
+                      "docs/restoration.md)"));
+  p.push_back(enumRow<FillStage>("fill.stopAfter", {"", "--stop-after", "", ""},
+                                 [](auto& j) -> auto& { return j.fill.stopAfter; }, "Stop after",
+                                 "The last stage of each hole's pipeline (the others are comparisons).",
+                                 "triangulation, refinement, biharmonic (CGAL-like fairing) or flow (default)"));
+  ParamSpec density = numberRow(ParamType::Float, "fill.refinement.density", {"", "--density", "", ""},
+                                [](auto& j) -> auto& { return j.fill.refinement.density; }, 0, kUnbounded,
+                                "Refinement density", "Liepa's refinement factor: larger makes smaller triangles.",
+                                "Liepa's refinement factor: larger makes smaller triangles");
+  density.minExclusive = true;
+  p.push_back(density);
+  auto flow = [](auto& j) -> auto& { return j.fill.flow; };
+  append(p, flowRows("fill.flow.", flow));
+  append(p, flowTuningRows("fill.flow.", flow, /*inDialog=*/false));
+  p.push_back(boolRow("selectNewFaces", {"NewFaceSelected", "", "", "select_new_faces"},
+                      [](auto& j) -> auto& { return j.selectNewFaces; }, "Select the newly created faces",
+                      "Afterwards only the new faces are selected (with no hole filled, the selection stays)."));
+  p.push_back(boolRow("colorByMeanCurvature", {"", "--color-by-mean-curvature", "", ""},
+                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by mean curvature",
+                      "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high).",
+                      "colour vertices by H (red low, blue high)"));
   return s;
 }
 
@@ -152,14 +302,35 @@ FilterSpec curvature() {
                "the vertex quality and colour (red low, blue high, over the 2-98 % range), and both H and K "
                "into the per-vertex attributes mean_curvature and gaussian_curvature.") +
            kReference;
+  // The paper's lambda fix, as a switch: the one place a bool becomes the H2KTreatment.
+  ParamSpec lambda = blankRow(ParamType::Bool, "curvature.curvature.h2k",
+                              {"lambdaFix", "--lambda-fix", "lambda_fix", "lambda_fix"});
+  help(lambda, "Paper's lambda fix",
+       "Where H² is below K (common on meshes), rescale H by the paper's lambda (at least 0.5).",
+       "apply the paper's lambda rescaling of H where H^2 < K (guarded); E still uses raw H");
+  lambda.set = [](JobOptions& j, double x) {
+    j.curvature.curvature.h2k = x != 0 ? H2KTreatment::PaperLambda : H2KTreatment::Clamp;
+  };
+  lambda.get = [](const JobOptions& j) { return j.curvature.curvature.h2k == H2KTreatment::PaperLambda ? 1.0 : 0.0; };
+  lambda.defaultValue = lambda.get(JobOptions{});
   s.params = {
-      boolParam("lambdaFix", false, "Paper's lambda fix",
-                "Where H² is below K (common on meshes), rescale H by the paper's lambda (at least 0.5)."),
-      enumParam("area", indexOf(VertexArea::Mixed), labels<VertexArea>(), "Vertex area",
-                "Mixed: Meyer et al.'s Voronoi area (converges). Barycentric: the paper's A/3 (H up to 15 % off)."),
+      lambda,
+      enumRow<VertexArea>(
+          "curvature.area", {"area", "--area", "area", "area"}, [](auto& j) -> auto& { return j.curvature.area; },
+          "Vertex area",
+          "Mixed: Meyer et al.'s Voronoi area (converges). Barycentric: the paper's A/3 (H up to 15 % off).",
+          "vertex area: mixed (Meyer et al.'s mixed Voronoi area, default) or barycentric (the paper's A/3)"),
   };
   return s;
 }
+
+std::string number(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", x);
+  return buf;
+}
+
+bool takesFraction(Caller face) { return face != Caller::MeshLab && face != Caller::Api; }
 
 }  // namespace
 
@@ -174,9 +345,34 @@ const char* richTypeName(ParamType t) {
   return "?";
 }
 
+std::string ParamSpec::describe(Caller face) const {
+  switch (face) {
+    case Caller::MeshLab:
+      if (inMeshLab()) return "'" + label + "' (" + name + ")";
+      break;
+    case Caller::Cli:
+      if (!cliFlag.empty()) return cliFlag;
+      break;
+    case Caller::Python:
+      if (!keyword.empty()) return keyword;
+      break;
+    case Caller::Blender:
+      if (!blenderProperty.empty()) return "'" + label + "' (" + blenderProperty + ")";
+      break;
+    case Caller::Api: break;
+  }
+  return field;
+}
+
 const ParamSpec* FilterSpec::param(const std::string& n) const {
   for (const ParamSpec& p : params)
-    if (p.name == n) return &p;
+    if (p.inMeshLab() && p.name == n) return &p;
+  return nullptr;
+}
+
+const ParamSpec* FilterSpec::row(const std::string& key) const {
+  for (const ParamSpec& p : params)
+    if (p.key() == key) return &p;
   return nullptr;
 }
 
@@ -199,18 +395,51 @@ std::optional<FilterId> findFilter(const std::string& name) {
 
 ParamValues ParamValues::defaults(const FilterSpec& spec) {
   ParamValues v;
-  for (const ParamSpec& p : spec.params) v.set(p.name, p.defaultValue);
+  for (const ParamSpec& p : spec.params)
+    if (p.inMeshLab()) v.set(p.key(), p.defaultValue);
   return v;
 }
 
-double ParamValues::get(const std::string& name) const {
-  auto it = values_.find(name);
-  if (it == values_.end()) throw InvalidInputError("parameter '" + name + "' has no value");
+double ParamValues::get(const std::string& key) const {
+  auto it = values_.find(key);
+  if (it == values_.end()) throw InvalidInputError("parameter '" + key + "' has no value");
   return it->second;
 }
-bool ParamValues::getBool(const std::string& name) const { return get(name) != 0; }
-int ParamValues::getInt(const std::string& name) const { return static_cast<int>(get(name)); }
-double ParamValues::getFloat(const std::string& name) const { return get(name); }
-int ParamValues::getEnum(const std::string& name) const { return static_cast<int>(get(name)); }
+bool ParamValues::getBool(const std::string& key) const { return get(key) != 0; }
+int ParamValues::getInt(const std::string& key) const { return static_cast<int>(get(key)); }
+double ParamValues::getFloat(const std::string& key) const { return get(key); }
+int ParamValues::getEnum(const std::string& key) const { return static_cast<int>(get(key)); }
+
+void checkValue(const ParamSpec& p, double x, Caller face) {
+  if (p.type == ParamType::Bool) return;
+  if (p.type == ParamType::Enum) {
+    const int n = static_cast<int>(p.enumValues.size());
+    if (x == std::floor(x) && x >= 0 && x < n) return;
+    throw InvalidInputError(p.describe(face) + ": enum value " + number(x) + " is not in 0.." + std::to_string(n - 1));
+  }
+  const bool fraction = p.type == ParamType::AbsPerc && takesFraction(face);
+  const double lo = p.minValue, hi = fraction ? 1.0 : p.maxValue;
+  if ((p.minExclusive ? x > lo : x >= lo) && x <= hi) return;  // NaN fails both
+  std::string range = hi < kUnbounded ? "in " + number(lo) + ".." + number(hi) : (p.minExclusive ? "> " : ">= ") + number(lo);
+  if (fraction) range += " (a fraction of the bounding-box diagonal)";
+  if (!p.rangeHint.empty()) range += " (" + p.rangeHint + ")";
+  throw InvalidInputError(p.describe(face) + " must be " + range + ", not " + number(x));
+}
+
+JobOptions readJob(const FilterSpec& spec, const ParamValues& v, Caller face, double diagonal) {
+  JobOptions job;
+  for (const ParamSpec& p : spec.params) {
+    if (!v.has(p.key())) continue;
+    double x = v.getFloat(p.key());
+    checkValue(p, x, face);
+    if (p.type == ParamType::AbsPerc && takesFraction(face)) x *= diagonal;
+    p.set(job, x);
+  }
+  return job;
+}
+
+void checkOptions(FilterId id, const JobOptions& job) {
+  for (const ParamSpec& p : filterSpec(id, {}).params) checkValue(p, p.get(job), Caller::Api);
+}
 
 }  // namespace elastica::app

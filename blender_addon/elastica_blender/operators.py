@@ -1,5 +1,6 @@
-"""The three operators. Their redo-panel properties are built from elastica.filters(): the MeshLab
-filters' parameters with their defaults, labels and ranges, so the add-on holds no numbers of its own.
+"""The three operators. Their redo-panel properties are built from elastica.filters(), the options
+table: every row with a Blender property, with its name, default, label and range, so the add-on holds
+no names or numbers of its own.
 
 Run from the menu or F3 (invoke), fairing and filling compute in a worker thread while Blender stays
 responsive: the status bar shows the step and energy, Esc cancels (the module's progress callback
@@ -50,12 +51,6 @@ elastica = _import_elastica()
 # The worker runs of modal operators still going (what the status bar shows; tests read it).
 running_jobs = []
 
-# Parameters the face decides rather than the module: the property each becomes (None: implied by
-# the mode, as Edit Mode's selection is).
-FACE_PROPERTIES = {"Selected": None, "colorByMeanCurvature": "color_by_mean_curvature",
-                   "NewFaceSelected": "select_new_faces"}
-
-
 def _property(p):
     """A bpy property for one parameter of elastica.filters()."""
     common = {"name": p["label"], "description": p["description"]}
@@ -72,13 +67,8 @@ def _property(p):
 
 
 def _properties(filter_name):
-    """{property name: (parameter, bpy property)} in the MeshLab dialog's order."""
-    out = {}
-    for p in elastica.filters()[filter_name]["parameters"]:
-        name = p["keyword"] or FACE_PROPERTIES.get(p["name"])
-        if name:
-            out[name] = (p, _property(p))
-    return out
+    """{property name: (parameter, bpy property)} in the table's order (the MeshLab dialog's)."""
+    return {p["blender"]: (p, _property(p)) for p in elastica.filters()[filter_name]["parameters"] if p["blender"]}
 
 
 class Job:

@@ -69,6 +69,11 @@ def noisy_sphere(name, level=3, noise=0.05, seed=3):
     return ob
 
 
+def pytest_approx(x):
+    """float32 bounds as Blender stores them."""
+    return float(np.float32(x))
+
+
 def diagonal(P):
     return float(np.linalg.norm(P.max(axis=0) - P.min(axis=0)))
 
@@ -76,11 +81,26 @@ def diagonal(P):
 # ---------------------------------------------------------------- tests
 
 def test_registered_with_the_filters_defaults():
-    fair = bpy.ops.mesh.elastica_fair.get_rna_type().properties
-    for p in elastica.filters()["fair"]["parameters"]:
-        if p["keyword"]:
-            assert fair[p["keyword"]].default == p["default"] or math.isclose(fair[p["keyword"]].default, p["default"],
-                                                                              rel_tol=1e-6), p
+    """Every row of the options table with a Blender property is a property of its operator, with the
+    row's default, label and range; and no operator has a parameter property the table does not list."""
+    operators = {"fair": bpy.ops.mesh.elastica_fair, "fill_holes": bpy.ops.mesh.elastica_fill_holes,
+                 "curvature": bpy.ops.mesh.elastica_curvature}
+    own = {"keep_connectivity"}  # the add-on's own (Edit Mode's selection and the mesh's connectivity)
+    for function, op in operators.items():
+        props = op.get_rna_type().properties
+        rows = [p for p in elastica.filters()[function]["parameters"] if p["blender"]]
+        for p in rows:
+            prop = props[p["blender"]]
+            assert prop.name == p["label"], p
+            if p["type"] == "enum":
+                assert prop.default == p["default"] and [i.identifier for i in prop.enum_items] == p["choices"], p
+            else:
+                assert prop.default == p["default"] or math.isclose(prop.default, p["default"], rel_tol=1e-6), p
+            if p["type"] in ("int", "float") and p.get("min") is not None:
+                assert prop.hard_min == pytest_approx(p["min"]), p
+        names = {prop.identifier for prop in props if prop.identifier != "rna_type"}
+        assert names == {p["blender"] for p in rows} | (own if function == "fair" else set()), function
+    fair = operators["fair"].get_rna_type().properties
     assert fair["scheme"].default == "auto"
     fill = bpy.ops.mesh.elastica_fill_holes.get_rna_type().properties
     assert fill["max_hole_edges"].default == 500 and fill["select_new_faces"].default

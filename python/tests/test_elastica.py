@@ -275,8 +275,9 @@ def test_example_scripts_list_every_parameter_at_its_default():
             spec = by_name[f.get("name")]
             seen.add(f.get("name"))
             params = {p.get("name"): p for p in f.iter("Param")}
-            assert set(params) == {p["name"] for p in spec["parameters"]}, script
-            for p in spec["parameters"]:
+            meshlab = [p for p in spec["parameters"] if p["name"]]  # the table's rows MeshLab has
+            assert set(params) == {p["name"] for p in meshlab}, script
+            for p in meshlab:
                 got = params[p["name"]]
                 where = f"{script}: {p['name']}"
                 if p["type"] == "bool":
@@ -324,9 +325,42 @@ def test_the_documented_python_example_runs_as_written(tmp_path, monkeypatch):
     assert len(F) > len(elastica.read(BUNNY_HOLE)[1])
 
 
+def test_keywords_are_the_options_tables(noisy):
+    """The keyword arguments of fair, fill_holes and curvature are the options table's rows with a
+    keyword (filters()), with the core's defaults in the docstring's signature; an unknown keyword or a
+    value of the wrong type raises TypeError, a value out of the row's range InvalidInputError naming
+    the keyword, and None takes the default."""
+    V, F = elastica.read(noisy)
+    calls = {"fair": elastica.fair, "fill_holes": elastica.fill_holes, "curvature": elastica.curvature}
+    for name, function in calls.items():
+        rows = [p for p in elastica.filters()[name]["parameters"] if p["keyword"]]
+        signature = function.__doc__.split("\n", 1)[0]
+        for p in rows:
+            assert f" {p['keyword']}=" in signature, (name, p["keyword"], signature)
+            if p["type"] == "enum":
+                assert f"{p['keyword']}='" in signature
+        assert signature.count("=") == len(rows) + (2 if name == "fair" else 1 if name == "fill_holes" else 0), signature
+        with pytest.raises(TypeError, match="unexpected keyword argument 'bogus'"):
+            function(V, F, bogus=1)
+        for p in rows:
+            wrong = "x" if p["type"] != "enum" else 3
+            with pytest.raises(TypeError, match=p["keyword"]):
+                function(V, F, **{p["keyword"]: wrong})
+            if p["type"] == "enum":
+                with pytest.raises(elastica.InvalidInputError, match=f"{p['keyword']} must be one of"):
+                    function(V, F, **{p["keyword"]: "bogus"})
+            elif p["type"] in ("int", "float") and p.get("min") is not None:
+                below = int(p["min"]) - 1 if p["type"] == "int" else p["min"] - 1
+                with pytest.raises(elastica.InvalidInputError, match=f"^{p['keyword']} must be"):
+                    function(V, F, **{p["keyword"]: below})
+    _, _, report = elastica.fair(V, F, scheme=None, max_steps=None, energy_tol=None)
+    assert report["scheme"] in ("vector", "semi-implicit")
+
+
 def test_remesh_and_flip_edges_are_the_cli_flags(noisy, tmp_path):
     V, F = elastica.read(noisy)
-    for flags, kwargs in ((["--no-remesh"], {"remesh": False}), (["--remesh", "--no-remesh"], {"remesh": False, "flip_edges": True})):
+    for flags, kwargs in ((["--no-remesh"], {"remesh": False}), (["--remesh", "--no-remesh"], {"remesh": False, "flip_edges": True}),
+                          (["--flip-edges", "--no-remesh"], {"remesh": False, "flip_edges": True})):
         out = tmp_path / "out.ply"
         cli("fair", noisy, "-o", out, *flags)
         V2, F2, r = elastica.fair(V, F, **kwargs)

@@ -5,6 +5,8 @@
 
 #include <elastica/shapes.h>
 #include <elastica/app/filter_run.h>
+#include <elastica/app/filter_apply.h>
+#include <elastica/app/filter_spec.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/vcg_adapter.h>
 
@@ -96,6 +98,43 @@ TEST_F(PluginFilter, FiltersAreInTheirMenus) {
   EXPECT_EQ(int(plugin.getClass(action("Fill Holes with Discrete Elastica"))), int(MeshFilterInterface::Remeshing));
   EXPECT_EQ(int(plugin.getClass(action("Discrete Elastica Curvature"))),
             int(MeshFilterInterface::Smoothing | MeshFilterInterface::Normal));
+}
+
+// The dialogs are the options table's rows with an .mlx name (app/filter_spec.h), in the table's
+// order, each with its type, label, tooltip and default (and, for a RichEnum, the table's menu).
+TEST_F(PluginFilter, DialogIsTheTablesMeshLabRows) {
+  fill(mm->cm, elastica::shapes::icosphere(1.0, 1));
+  namespace ea = elastica::app;
+  for (const ea::FilterSpec& spec : ea::allFilters(ea::meshFacts(mm->cm))) {
+    const RichParameterList params = defaults(QString::fromStdString(spec.name));
+    std::vector<std::string> names;
+    for (const RichParameter& p : params) names.push_back(p.name().toStdString());
+    std::vector<std::string> rows;
+    for (const ea::ParamSpec& row : spec.params)
+      if (row.inMeshLab()) rows.push_back(row.name);
+    EXPECT_EQ(names, rows) << spec.name;
+    for (const ea::ParamSpec& row : spec.params) {
+      if (!row.inMeshLab()) continue;
+      SCOPED_TRACE(spec.name + " / " + row.name);
+      const QString name = QString::fromStdString(row.name);
+      const RichParameter& p = params.getParameterByName(name);
+      EXPECT_EQ(p.fieldDescription().toStdString(), row.label);
+      EXPECT_EQ(p.toolTip().toStdString(), row.tooltip);
+      switch (row.type) {
+        case ea::ParamType::Bool: EXPECT_EQ(params.getBool(name), row.defaultValue != 0); break;
+        case ea::ParamType::Int: EXPECT_EQ(params.getInt(name), int(row.defaultValue)); break;
+        case ea::ParamType::Float: EXPECT_EQ(params.getFloat(name), float(row.defaultValue)); break;
+        case ea::ParamType::AbsPerc: EXPECT_EQ(params.getAbsPerc(name), float(row.defaultValue)); break;
+        case ea::ParamType::Enum: {
+          EXPECT_EQ(params.getEnum(name), int(row.defaultValue));
+          QStringList menu;
+          for (const std::string& e : row.enumValues) menu << QString::fromStdString(e);
+          EXPECT_EQ(dynamic_cast<const RichEnum&>(p).enumvalues, menu);
+          break;
+        }
+      }
+    }
+  }
 }
 
 // Every help string as MeshLab shows it: a parameter's help under its field is Qt rich text

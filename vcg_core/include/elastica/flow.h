@@ -41,15 +41,8 @@ enum class Scheme {
   Vector,
   /// Vector where the moving region has at least kVectorVerticesPerHandle · (genus + 1) vertices
   /// (any genus-0 region, a disk included), semi-implicit below: on handles resolved by few edges
-  /// the vector scheme's tangential freedom finds discrete states below the continuum's minimum
-  /// (a genus-2 cage at 1,213 vertices: E 104.6 where the genus-2 minimiser has 112.8; a tube
-  /// torus at 494 vertices: E 57.7 where no torus goes below 8π² ≈ 79), which it does not at
-  /// 6,577 and 15,536 vertices (112.83, 78.93). At 1,000 vertices per handle it still stalled on
-  /// the genus-2 and genus-3 block cages (--subdivide 3: 3,034 and 4,088 vertices, 594 and 2,622
-  /// attempts, 20 and 94 s), where the semi-implicit scheme converged at E 112.78 and 143.04 in
-  /// 622 and 801 attempts; a thin ring at 3,072 per handle converges (E 78.85), knot1 at 1,600
-  /// stops at its self-contact (the semi-implicit scheme stalls there). FlowReport::scheme says
-  /// which ran.
+  /// the vector scheme finds discrete states below the continuum's minimum (docs/options.md).
+  /// FlowReport::scheme says which ran.
   Automatic,
 };
 
@@ -93,115 +86,62 @@ struct FlowProgress {
   double seconds = 0;     ///< wall time so far
 };
 
+/// Options of fair() (one line each: what, unit, default). Why each default is what it is, with
+/// the measurements behind it: docs/options.md.
 struct FlowOptions {
-  FlowType flow = FlowType::Elastica;
-  /// Automatic by default, the vector scheme on everything but coarse meshes with handles: whole
-  /// scans that the semi-implicit scheme left at its time limit (cow, dino, bull) converge to round
-  /// spheres in under 200 attempts (docs/benchmarks.md).
-  /// The Laplacian-of-H flow runs semi-implicit, the bilaplacian flow explicit (fair() says so if
-  /// asked otherwise).
+  FlowType flow = FlowType::Elastica;  ///< which flow; default the elastica flow
+  /// Time integration; default Automatic. The Laplacian-of-H flow runs semi-implicit and the
+  /// bilaplacian flow explicit whatever is asked (FlowReport::scheme says which ran).
   Scheme scheme = Scheme::Automatic;
-  VertexArea area = VertexArea::Mixed;
-  CurvatureOptions curvature;  ///< H² − K treatment (clamp by default, or the paper's λ)
-  BoundaryMode boundary = BoundaryMode::Fixed;
+  VertexArea area = VertexArea::Mixed;  ///< vertex area of the operators; default Meyer's mixed area
+  CurvatureOptions curvature;           ///< H² − K < 0: clamped by default, or the paper's λ
+  BoundaryMode boundary = BoundaryMode::Fixed;  ///< boundary vertices; default fixed with the next ring (G¹)
 
-  /// Dynamic connectivity (the paper's future work [7]), lightly: at every check, flip the
-  /// non-Delaunay edges among moving vertices. Positions are untouched; faces change.
+  /// Flip non-Delaunay edges among moving vertices at every check (positions untouched); default off.
   bool flipEdges = false;
-  /// With flipEdges: look for edges to flip at every flipInterval-th check only. Each flip changes
-  /// the semi-implicit system's sparsity pattern, which is then built and analysed again:
-  /// flipping at every step (flips on 31 of 41 steps), that was 26 % of a 406-edge hole's fill.
+  /// With flipEdges: look for flips at every flipInterval-th check only (checks); default 1.
   int flipInterval = 1;
 
-  /// Semi-implicit scheme: mesh quality as stages of the pipeline (the paper's future work,
-  /// dynamic connectivity). Before the first flow, the mesh is subdivided (within
-  /// subdivisionLevels) until at least 100 + 1,000·genus vertices move; before the first stage, the
-  /// faces whose vertices all move are remeshed isotropically (split, collapse, flip, relax; the
-  /// vertex count stays about the same); after a stage that left an angle below 20° or a vertex
-  /// whose curvature κ and edge length ℓ have κℓ > 0.6 (a neck the energy cannot see), they are
-  /// remeshed again, finer where κ is large (ℓ ≈ 0.4/κ), and flowed again (twice at most);
-  /// after every accepted step, non-Delaunay edges among moving vertices are flipped; and no step
-  /// or remeshing that makes faces cross is accepted when the input's did not (the embedding
-  /// guard). Fixed vertices and every face touching one are never rewritten. Off: the mesh keeps
-  /// its connectivity (but for flipEdges and subdivision). The explicit scheme ignores it.
+  /// Vector and semi-implicit schemes: the mesh-quality stages around the flow (a working-resolution
+  /// floor of 100 + 1,000·genus moving vertices, isotropic and curvature-adaptive remeshing of the
+  /// moving region, Delaunay flips, the embedding guard); fixed vertices and their faces are never
+  /// rewritten. Default on; off keeps the connectivity (but for flipEdges and subdivision).
   bool remesh = true;
 
-  /// Tangential drift ε·T (paper eq. 2.5): area-weighted bi-umbrella, keeps triangles even.
-  bool tangentialDrift = true;
-  /// τ = stepFactor · A_min² (paper: 1/150; stable up to about 1/3 on icospheres).
-  double stepFactor = 1.0 / 150;
-  /// ε = driftFactor · A_min (paper: 12).
-  double driftFactor = 12;
-  /// Bilaplacian step (dimensionless: U0² scales like length, stable below 0.5).
-  double bilaplacianStep = 0.05;
+  bool tangentialDrift = true;     ///< the tangential drift ε·T (paper eq. 2.5); default on
+  double stepFactor = 1.0 / 150;   ///< explicit step τ = stepFactor · A_min² (dimensionless); default 1/150 (paper)
+  double driftFactor = 12;         ///< drift ε = driftFactor · A_min (dimensionless); default 12 (paper)
+  double bilaplacianStep = 0.05;   ///< bilaplacian step (dimensionless, stable below 0.5); default 0.05
 
-  /// Stop at the energy plateau: when the relative energy change per unit of normalised time
-  /// t / A² (A the moving region's area, so the measure depends on neither scale nor resolution)
-  /// falls below this. On a noisy 642-vertex sphere 0.05 leaves a radius spread under 0.5 %;
-  /// 0.02 took 4× the steps for a spread of 0.26 % (the last slow mode is a mesh redistribution
-  /// that changes E by ~1e-6 relative per 10,000 steps). The explicit scheme measures it every
-  /// checkInterval steps, the semi-implicit one over its last 10 accepted steps; the vector scheme
-  /// stops on the shape instead (its normal motion over the slowest mode's time), not on this.
+  /// Stop at the energy plateau: relative energy change per unit of normalised time t/A² (A the
+  /// moving region's area) below this; default 0.05. The vector scheme stops on the shape instead.
   double energyTolerance = 0.05;
-  /// Subdivide (if levels remain) when the same rate falls below this (near steady state).
-  double subdivisionTolerance = 0.05;
-  /// Number of 1-to-4 subdivisions (coarse-to-fine, paper §2).
-  int subdivisionLevels = 0;
-  /// Stop subdividing once the mean edge length is at or below this (0: no target).
-  double targetEdgeLength = 0;
+  double subdivisionTolerance = 0.05;  ///< subdivide (if levels remain) when the same rate is below this; default 0.05
+  int subdivisionLevels = 0;           ///< 1-to-4 subdivisions, coarse to fine (paper §2), 0..8; default 0
+  double targetEdgeLength = 0;         ///< stop subdividing at this mean edge length (length; 0: no target); default 0
 
-  /// A fairing amount (a length, in the mesh's units; 0: off, flow until converged). The flow's
-  /// principal part u_t = −½ Δ²u runs for the time t = 2 (featureSize / 2π)⁴ and stops with
-  /// StopReason::FeatureSize. It damps a ripple of wavelength λ like exp(−½ (2π/λ)⁴ t): ripples of
-  /// featureSize lose 1/e of their height, ripples of a third of it vanish (e⁻⁸¹), shapes five
-  /// times larger keep all but 1/600 of theirs, and a sphere of radius R shrinks by
-  /// 4R (featureSize / 2πR)⁴. With the vector scheme (Automatic's choice under an amount): four
-  /// linearly implicit steps with the operators of the mesh as given, its vertices and
-  /// connectivity kept, no step refused (the full flow's nonlinear terms act on the shape's own
-  /// scale, which the amount leaves alone, and on a noisy scan they read the noise as curvature).
-  /// With the explicit or semi-implicit scheme, or the Laplacian-of-H flow: that scheme's steps of
-  /// the full flow, at most t/4, without the first remeshing. Not for the bilaplacian flow (its
-  /// time has no length unit).
+  /// A fairing amount (length; 0: flow until converged): run the flow's principal part −½Δ²u for
+  /// t = 2 (featureSize/2π)⁴, which damps ripples of that wavelength by 1/e, then stop with
+  /// StopReason::FeatureSize (docs/options.md). Elastica and Laplacian-of-H flows. Default 0.
   double featureSize = 0;
 
-  long long maxSteps = 2'000'000;  ///< over all stages
-  double maxSeconds = 0;           ///< wall-time limit; 0 means none
-  int checkInterval = 100;         ///< explicit: steps between energy-rate checks and checkpoints
+  long long maxSteps = 2'000'000;  ///< step limit over all stages; default 2,000,000
+  double maxSeconds = 0;           ///< wall-time limit (seconds; 0: none); default 0
+  int checkInterval = 100;         ///< explicit: steps between energy-rate checks and checkpoints; default 100
 
-  /// Semi-implicit: stop when E changed by less than this (relative) over the last 10 accepted steps.
+  /// Semi-implicit: stop when E changed by less than this (relative) over the last 10 accepted steps; default 1e-6.
   double plateauTolerance = 1e-6;
-  /// Semi-implicit: also stop once the shape has settled, when an accepted step is implicit at the
-  /// scale of the whole moving region (τ ≥ A²/50, A its area: even its slowest bending mode
-  /// relaxes within the step, so δ approximates the remaining distance to the fixed point) and
-  /// moved no vertex along its normal by more than this times the mean edge length. 0 turns it
-  /// off (`fair`'s default). After that point the energy still falls slowly, for hundreds of
-  /// steps, while the tangential drift evens out the vertices and the surface follows by less
-  /// than 10⁻⁴ ℓ per step (bunny flank: 21 steps instead of 273, the same distances to the
-  /// removed surface within 0.04 % of the diagonal); a hole fill (default 10⁻³) does not wait.
+  /// Semi-implicit: also stop once a step at the scale of the whole moving region (τ ≥ A²/50)
+  /// moves no vertex along its normal by more than this many mean edge lengths (0: off); default 0.
   double shapeTolerance = 0;
-  /// Semi-implicit: the first step is a tenth of the moving region's shape scale (τ = A²/500)
-  /// instead of 0.05 ℓ⁴. For a start that is smooth already (a hole's bi-Laplace patch), where
-  /// growing τ by ×1.5 from the mesh's scale only ramps up: a 200-edge hole in a 44k-vertex scan
-  /// took 62 steps, 24 from the shape scale, to the same energy within 0.2 %. A step too large is
-  /// rejected and halved as any other.
+  /// Semi-implicit: start at a tenth of the region's shape scale (τ = A²/500) instead of 0.05 ℓ⁴; default off.
   bool startAtShapeScale = false;
-  /// Semi-implicit: a step is rejected if a vertex moves along its normal by more than this many
-  /// of its mean edge lengths (folds, the energy and crossings judge every step too). 0.5 made
-  /// the steps a torus needs grow with its resolution. The distance a hole's patch travels from
-  /// its bi-Laplace start grows with the hole, in edge lengths (its steps' largest moves summed
-  /// to about 17 on a 406-edge hole, at up to 1.9 a step), so the fill allows more
-  /// (HoleFillOptions::defaultFillFlow).
+  /// Semi-implicit: reject a step that moves a vertex along its normal by more than this many of its
+  /// mean edge lengths; default 2.
   double maxJump = 2;
-  /// Semi-implicit: a step that would move a vertex farther than maxJump is shortened to that
-  /// distance (every vertex's displacement scaled by the same factor) instead of rejected, and τ
-  /// is kept. The solve's direction is a descent direction whatever the length taken along it, so
-  /// the energy test still judges the shortened step; a rejected step cost a factorisation, and
-  /// the ceiling it left behind made τ grow by ×1.2 instead of ×1.5 a step for the rest of the run
-  /// (a 794-edge hole: 5 rejections, then 26 steps from τ = A²/16,000 to A²/125).
-  /// Off for `fair`; the fill turns it on (HoleFillOptions::defaultFillFlow).
+  /// Semi-implicit: shorten a step longer than maxJump to that length instead of rejecting it; default off.
   bool shortenJumps = false;
-  /// Semi-implicit: tangential drift passes (ε = driftFactor · A_min each) after an accepted step.
-  int driftPasses = 2;
+  int driftPasses = 2;  ///< semi-implicit: tangential drift passes after an accepted step; default 2
 
   /// Called at every check; return false to cancel (the mesh keeps its last good state).
   std::function<bool(const FlowProgress&)> progress;

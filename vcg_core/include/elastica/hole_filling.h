@@ -36,35 +36,21 @@ enum class FillStage {
   Flow,           ///< + the curvature flow (default)
 };
 
+/// Options of fillHoles() (one line each: what, unit, default). The measurements behind the
+/// defaults: docs/options.md.
 struct HoleFillOptions {
-  /// Holes with more border edges than this are left open (MeshLab's "Max size to be closed").
-  int maxHoleEdges = 500;
-  /// Also close the rims of open surfaces. By default a boundary loop that is an outer rim (it
-  /// turns like an outline, geodesic turning > 0, and spans at least a quarter of the area of its
-  /// piece of mesh: a terrain's edge, a face scan's outline, a lone triangle's sides; see
-  /// docs/restoration.md) stays open, and only the holes inside the surface are filled.
+  int maxHoleEdges = 500;  ///< holes with more border edges are left open (MeshLab's "Max size to be closed"); default 500
+  /// Also close the outer rims of open surfaces (a loop that turns like an outline and spans a
+  /// quarter or more of its piece's area; docs/restoration.md); default off: only holes are filled.
   bool closeRims = false;
-  FillStage stopAfter = FillStage::Flow;
-  PatchRefinementOptions refinement;
-  /// Holes with at least this many border edges are faired coarse to fine (0: never): the patch
-  /// is refined to half the border's density, started and flowed there, then remeshed to the
-  /// border's density and flowed again from that shape (that flow judged against its own start). A large patch's flow spends its steps
-  /// moving the whole surface far (the bi-Laplace start of a deep hole is far from the elastica
-  /// one), which a quarter of the vertices does as well at a quarter of the cost per step. From
-  /// 700: the bunny's 792-edge hole took 12.3 s direct (a flow of 109 attempts from a 0.8° start)
-  /// and 5.9 s coarse to fine; at 400 edges it saved nothing and its patches lay a little farther
-  /// from the scans' cut-away surface (bunny 1.90 % against 1.59 % of the diagonal).
+  FillStage stopAfter = FillStage::Flow;  ///< the last stage of each hole's pipeline; default the flow
+  PatchRefinementOptions refinement;      ///< Liepa's refinement of the triangulation
+  /// Fair holes with at least this many border edges coarse to fine (border edges; 0: never):
+  /// flowed at half the border's density first, then at its density; default 700.
   int coarseFirstFromEdges = 700;
-  /// The flow that fairs each patch (the boundary mode is ignored: the surrounding mesh is fixed).
-  /// Subdivision is not allowed: it would split the original faces. Defaults to the semi-implicit
-  /// elastica flow, which converges in tens of steps where the explicit scheme needs hundreds of
-  /// thousands (a 70° cap of a 2,562-vertex sphere: 34 steps in 0.03 s against 640,000 in 107 s),
-  /// with edge flips, which keep the patch's triangles from degenerating where a deep hole
-  /// stretches it (smallest angle 24° instead of 19° on a 100° cap), stopping once the patch's
-  /// shape has settled (FlowOptions::shapeTolerance, 10⁻³ of the mean edge length) rather than at
-  /// the later energy plateau of the tangential redistribution. Its maxSteps and maxSeconds
-  /// bound the whole fill: the holes' flows share them (the wall time counts from the start of
-  /// fillHoles); a hole reached after a limit keeps its bi-Laplace patch.
+  /// The flow that fairs each patch (boundary mode ignored, no subdivision); default
+  /// defaultFillFlow(): semi-implicit with edge flips, stopping once the patch's shape has settled.
+  /// Its maxSteps and maxSeconds bound the whole fill (the holes' flows share them).
   FlowOptions flow = defaultFillFlow();
 
   static FlowOptions defaultFillFlow() {

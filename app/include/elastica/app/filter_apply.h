@@ -31,13 +31,17 @@ void updateBoxAndNormals(VcgMeshT& m) {
   vcg::tri::UpdateNormal<VcgMeshT>::PerVertexNormalizedPerFaceNormalized(m);
 }
 
-/// The face selection of `m`: one byte per live face, 1 where selected.
+/// The selected live faces of `m`, numbered as toTriMesh numbers them (deleted faces skipped).
 template <class VcgMeshT>
-std::vector<std::uint8_t> faceSelection(const VcgMeshT& m) {
-  std::vector<std::uint8_t> selection;
-  for (const auto& f : m.face)
-    if (!f.IsD()) selection.push_back(f.IsS() ? 1 : 0);
-  return selection;
+FaceSet faceSelection(const VcgMeshT& m) {
+  std::vector<int> selected;
+  int index = 0;
+  for (const auto& f : m.face) {
+    if (f.IsD()) continue;
+    if (f.IsS()) selected.push_back(index);
+    ++index;
+  }
+  return FaceSet(std::move(selected));
 }
 
 /// Writes a fairing result back into `m`, the mesh it was copied from: only the positions when the
@@ -52,8 +56,8 @@ void writeBack(const FairingResult& r, VcgMeshT& m) {
     fromTriMesh(r.mesh, m);
     // The face selection is the faired region as remeshed; no vertex is selected (MeshLab's face
     // selection tools select none either).
-    for (size_t f = 0; f < r.selection.size(); ++f)
-      if (r.selection[f]) m.face[f].SetS();
+    if (r.region)
+      for (int f : r.region->faces) m.face[static_cast<std::size_t>(f)].SetS();
   }
   updateBoxAndNormals(m);
 }
@@ -89,10 +93,9 @@ struct MeshChanges {
   bool any() const { return positions || connectivity || selection || curvature; }
 };
 
-/// A filter applied: its summary lines for the user (a line starting "warning: " is one) and
-/// what it changed.
+/// A filter applied: its summary lines for the user and what it changed.
 struct AppliedFilter {
-  std::vector<std::string> log;
+  std::vector<LogLine> log;
   MeshChanges changed;
 };
 
@@ -109,16 +112,17 @@ AppliedFilter applyFilter(FilterId id, VcgMeshT& m, const ParamValues& v, const 
     return a;
   }
   if (id == FilterId::FillHoles) {
+    const bool selectNew = readJob(filterSpec(id, {}), v, Caller::MeshLab).selectNewFaces;
     FillHolesResult r = runFillHoles(toTriMesh(m), v, progress);
-    writeBack(r, m, v.getBool("NewFaceSelected"));
+    writeBack(r, m, selectNew);
     const bool changed = r.report.filledCount() > 0 || !r.report.welds.empty();
     a.changed.positions = a.changed.connectivity = changed;
-    a.changed.selection = changed && v.getBool("NewFaceSelected");
+    a.changed.selection = changed && selectNew;
     a.log = std::move(r.log);
     return a;
   }
-  const bool selected = v.getBool("Selected");
-  FairingResult r = runFairing(toTriMesh(m), selected ? faceSelection(m) : std::vector<std::uint8_t>{}, v, progress);
+  const bool selected = readJob(filterSpec(id, {}), v, Caller::MeshLab).selected;
+  FairingResult r = runFairing(toTriMesh(m), selected ? std::optional<FaceSet>(faceSelection(m)) : std::nullopt, v, progress);
   writeBack(r, m);
   if (r.outputCurvature) storeCurvature(m, r.curvature.H, r.curvature.K);
   a.changed.positions = true;

@@ -1,19 +1,21 @@
 // Running a job: core options → the core, on a TriMesh copy, with what a face needs afterwards
-// (the write-back decision, the output curvature, summary lines); and, for the MeshLab filters
-// and .mlx scripts, parameter values → core options first. The vcglib-facing half (copying in and
+// (the write-back decision, the output curvature, summary lines with their severity); and, for
+// the MeshLab filters and .mlx scripts, parameter values → core options first (readJob). The vcglib-facing half (copying in and
 // writing back) is in filter_apply.h; this half is plain C++, so its numerics are the same
-// whoever calls it (the `elastica` command, the MeshLab plugin or `elastica run`).
+// whoever calls it (the `elastica` command, the MeshLab plugin, `elastica run`, Python, Blender).
 #pragma once
 
 #include <elastica/mesh_curvature.h>
 #include <elastica/topology.h>
 #include <elastica/app/filter_spec.h>
+#include <elastica/face_set.h>
 #include <elastica/flow.h>
 #include <elastica/hole_filling.h>
 #include <elastica/types.h>
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,15 @@ using Progress = std::function<bool(int percent, const std::string& what)>;
 /// begun, capped at 99 % and never going back; so it moves with the time used instead of creeping
 /// along the share of a large maxSteps and jumping at the end. Empty if `progress` is.
 std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o);
+
+/// How much a summary line matters: MeshLab logs a warning as one; the other faces print both.
+enum class Severity { Info, Warning };
+
+/// A summary line for the user.
+struct LogLine {
+  Severity severity = Severity::Info;
+  std::string text;
+};
 
 /// Whether an input error names MeshLab's repair filters.
 enum class RepairHints { None, MeshLab };
@@ -48,19 +59,15 @@ struct FilterOutputs {
   bool curvature = false;      ///< vertex quality and colour by H; mean/gaussian_curvature attributes
   bool faceSelection = false;  ///< the face selection was set
 };
-FilterOutputs filterOutputs(FilterId id, const ParamValues& v);
+FilterOutputs filterOutputs(FilterId id, const JobOptions& job);
 
-/// The FlowOptions a "Discrete Elastica Fairing" parameter set stands for.
-/// @throws InvalidInputError naming the parameter if a value is out of range.
-FlowOptions fairingOptions(const ParamValues& v);
-
-/// What a fairing run produced (the input copy is not touched on failure).
 /// FlowOptions::maxSteps for a step limit as the faces take it: 0 means no limit.
 long long stepLimit(long long steps);
 
+/// What a fairing run produced (the input copy is not touched on failure).
 struct FairingResult {
   TriMesh mesh;                          ///< the faired mesh (subdivided if asked)
-  std::vector<std::uint8_t> selection;   ///< the face selection, refined with the mesh (if one was given)
+  std::optional<FaceSet> region;         ///< the region's faces in `mesh`, refined with it (if one was given)
   bool connectivityChanged = false;      ///< subdivided or flipped: write the whole mesh back
   bool outputCurvature = false;          ///< `curvature` holds the result's H and K
   MeshCurvature curvature;               ///< of the result, when outputCurvature
@@ -69,27 +76,28 @@ struct FairingResult {
   /// refinement or remeshing, over the region that moves.
   double energyInput = 0, energyOutput = 0;
   FlowReport report;
-  std::vector<std::string> log;          ///< summary lines for the user
+  std::vector<LogLine> log;              ///< summary lines for the user
+  /// The flow's own energies when its start differs from the input's (after refinement or
+  /// remeshing, or over a region); also in `log`. Empty otherwise.
+  std::string flowEnergyLine;
 };
 
-/// Fairs `mesh` with `opt`: the whole mesh if `selection` is empty, else the faces whose byte is
-/// non-zero (one per face). With `outputCurvature`, also measures the result (opt.area and
-/// opt.curvature). The one fairing path of every face.
-/// @throws InvalidInputError (nothing can move, bad options, ...), FlowDivergedError (with the
-///         report so far), Error (the progress callback cancelled).
-FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, const FlowOptions& opt,
-                         bool outputCurvature);
+/// Fairs `mesh` with `opt`: the whole mesh without a `region`, else the region's faces. With
+/// `outputCurvature`, also measures the result (opt.area and opt.curvature). The one fairing path
+/// of every face. Checks what the faces' paths check first: the options against the table's
+/// ranges (checkOptions), the mesh (checkedTopology, non-manifold vertices refused, with `hints`)
+/// and a region with faces.
+/// @throws InvalidInputError (bad options or mesh, an empty region, nothing can move, ...),
+///         FlowDivergedError (with the report so far), Error (the progress callback cancelled).
+FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const FlowOptions& opt, bool outputCurvature,
+                         RepairHints hints = RepairHints::None);
 
-/// Fairs `mesh` as "Discrete Elastica Fairing" with values `v` (`selection`: one byte per face,
+/// Fairs `mesh` as "Discrete Elastica Fairing" with values `v` (`selection`: the selected faces,
 /// used when the Selected parameter is on).
 /// @throws InvalidInputError (non-manifold or inconsistently oriented input, nothing selected,
 ///         bad parameters, ...), NumericalError (the flow diverged), Error (cancelled).
-FairingResult runFairing(TriMesh mesh, std::vector<std::uint8_t> selection, const ParamValues& v,
+FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> selection, const ParamValues& v,
                          const Progress& progress);
-
-/// The HoleFillOptions a "Fill Holes with Discrete Elastica" parameter set stands for.
-/// @throws InvalidInputError naming the parameter if a value is out of range.
-HoleFillOptions fillHolesOptions(const ParamValues& v);
 
 /// What a hole-filling run produced: the original vertices and faces unchanged and first, the new
 /// ones appended.
@@ -99,11 +107,13 @@ struct FillHolesResult {
   HoleFillReport report;               ///< per hole; report.isNewFace(f); report.welds
   bool outputCurvature = false;        ///< `curvature` holds the result's H and K
   MeshCurvature curvature;             ///< of the result, when outputCurvature
-  std::vector<std::string> log;        ///< one line per hole, and a total
+  std::vector<LogLine> log;            ///< one line per hole, and a total
 };
 
 /// Fills the holes of `mesh` with `opt` (with `outputCurvature`, also measures the result with
-/// opt.flow.area and opt.flow.curvature). The one hole-filling path of every face.
+/// opt.flow.area and opt.flow.curvature). The one hole-filling path of every face. Checks the
+/// options against the table's ranges (checkOptions); the mesh is the caller's to check
+/// (checkFillInput; the CLI's readers already refuse what it refuses).
 /// @throws InvalidInputError (non-manifold edges, bad options).
 FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outputCurvature = false);
 
@@ -115,7 +125,7 @@ FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress&
 struct CurvatureResult {
   MeshCurvature curvature;
   bool lambdaFix = false;
-  std::vector<std::string> log;  ///< H's range, λ, degenerate elements, the energy
+  std::vector<LogLine> log;  ///< H's range, λ, degenerate elements, the energy
 
   /// The H a face outputs: H/λ where the paper's λ fix applied, else H (reported sign).
   const std::vector<double>& outputH() const { return lambdaFix ? curvature.Hlambda : curvature.H; }

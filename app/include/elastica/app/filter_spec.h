@@ -1,13 +1,20 @@
-// The MeshLab filters as data: names, parameters, defaults and help texts. Shared by the MeshLab
-// plugin (which turns each parameter into a RichParameter) and `elastica run` (which reads them
-// from .mlx scripts), so both see the same names, the same defaults and the same meaning.
-// Qt-free and vcglib-free.
+// The options table: every parameter of the three filters, one row each, with its name on every
+// face (the options field, the .mlx name, the CLI flag, the Python keyword, the Blender property),
+// its type, range, default and help. Every face is generated from it: the MeshLab dialogs and
+// `elastica run` (the rows with an .mlx name), the CLI's options (cli/flow_options.cpp), the
+// Python keywords and filters() (python/elastica_module.cpp) and, through filters(), the Blender
+// redo panels. Enumerated values come from choices.h. Qt-free and vcglib-free.
 //
-// Filter and parameter names are fixed for good: .mlx scripts key on them, and Debian's
-// meshlabserver aborts on a script that omits a parameter, so scripts list every one. Add a
-// parameter only when an issue asks for it, and never rename one.
+// Names are fixed for good: .mlx scripts, command lines, Python scripts and Blender files key on
+// them, and Debian's meshlabserver aborts on a script that omits an .mlx parameter, so scripts
+// list every one. Add a row only when an issue asks for it, and never rename one.
 #pragma once
 
+#include <elastica/flow.h>
+#include <elastica/hole_filling.h>
+#include <elastica/mesh_curvature.h>
+
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -19,40 +26,81 @@ namespace elastica::app {
 /// The filters, in menu order. The values are the plugin's FilterIDType ids.
 enum class FilterId { Fairing = 0, FillHoles = 1, Curvature = 2 };
 
-/// The parameter kinds used, as MeshLab names them in .mlx files (RichBool, RichInt, ...).
+/// Who gives a value, and so how a message names the parameter: a face, or the C++ API (the
+/// options structs, named by field).
+enum class Caller { MeshLab, Cli, Python, Blender, Api };
+
+/// The parameter kinds, as MeshLab names them in .mlx files (RichBool, RichInt, ...).
 /// AbsPerc is a length that MeshLab's dialog also shows as a percentage of the bounding-box
-/// diagonal: its value (dialog, .mlx, ParamSpec::defaultValue for MeshFacts::diagonal) is the
-/// length. The faces that take fractions of the diagonal (CLI, Python, Blender) multiply by it.
+/// diagonal: MeshLab's value (dialog, .mlx) is the length; the CLI, Python and Blender take a
+/// fraction of the diagonal (0..1).
 enum class ParamType { Bool, Int, Float, Enum, AbsPerc };
 
 /// "RichBool", "RichInt", "RichFloat", "RichEnum", "RichAbsPerc".
 const char* richTypeName(ParamType t);
 
+/// What a filter's parameters set: the core's options of its run and what the face does around it.
+struct JobOptions {
+  FlowOptions flow;                    ///< Discrete Elastica Fairing
+  HoleFillOptions fill;                ///< Fill Holes with Discrete Elastica
+  CurvatureMeasureOptions curvature;   ///< Discrete Elastica Curvature
+  bool selected = false;               ///< fairing: only the selected faces move
+  bool colorByMeanCurvature = false;   ///< store H as vertex quality and colour
+  bool selectNewFaces = true;          ///< fill: only the new faces are selected afterwards
+};
+
+/// One row of the options table. A name left empty: the face does not have the parameter.
 struct ParamSpec {
-  std::string name;                     ///< the .mlx name, fixed forever
+  std::string field;            ///< the JobOptions member it sets: "flow.maxSteps"
+  std::string name;             ///< the .mlx name (MeshLab's dialog, `elastica run`)
+  std::string cliFlag;          ///< "--max-steps"; a Bool row's flag sets the opposite of the default
+  std::string cliAlias;         ///< an older spelling the CLI still takes ("--remesh" for --flip-edges)
+  std::string keyword;          ///< the Python keyword argument
+  std::string blenderProperty;  ///< the Blender operator's property
   ParamType type = ParamType::Bool;
-  double defaultValue = 0;              ///< bool as 0/1, int, float, or the enum index
-  std::vector<std::string> enumValues;  ///< RichEnum entries, in index order
-  /// The dialog's field description, and the help shown under it and as its tooltip: plain text,
-  /// without '<', '>' or '&' (MeshLab shows the help as Qt rich text but the tooltip as plain
-  /// text, so only text without markup characters reads the same in both; tested).
+  /// The dialogs' default (MeshLab, Blender): bool as 0/1, int, float, or the enum index. The CLI
+  /// and Python start from the core's defaults (`get` of a default JobOptions); they differ only
+  /// where an interactive session needs a bound (a 60 s time limit, no step limit).
+  double defaultValue = 0;
+  std::vector<std::string> enumValues;  ///< Enum: MeshLab's menu entries, in .mlx index order
+  std::vector<std::string> enumWords;   ///< Enum: the CLI's and Python's words, same order
+  /// The dialog's field name, and the help under it and in its tooltip (also Python's and
+  /// Blender's description): plain text without '<', '>' or '&' (MeshLab shows the help as Qt rich
+  /// text but the tooltip as plain text; tested).
   std::string label;
   std::string tooltip;
-  /// Int and Float: the accepted range, checked in one place (checkedNumber in filter_run.cpp)
-  /// for the plugin's dialog and for .mlx scripts alike.
+  std::string cliHelp;  ///< the --help line (in the CLI's words, naming other flags)
+  /// Int, Float, AbsPerc: the accepted range, checked in one place (checkValue) for every face.
+  /// AbsPerc's range is for the length; faces that take a fraction accept 0..1.
   double minValue = -std::numeric_limits<double>::infinity();
   double maxValue = std::numeric_limits<double>::infinity();
-  std::string rangeHint;  ///< why the minimum, if it needs saying ("a hole has 3 edges or more")
+  bool minExclusive = false;  ///< the minimum itself is refused (> 0)
+  std::string rangeHint;      ///< why the minimum, if it needs saying ("a hole has 3 edges or more")
+  /// Writes a value (as in ParamValues) into its field, and reads it back (the core's default
+  /// from a default JobOptions).
+  std::function<void(JobOptions&, double)> set;
+  std::function<double(const JobOptions&)> get;
+
+  bool inMeshLab() const { return !name.empty(); }
+  /// The key of its value in ParamValues: the .mlx name, else the field.
+  const std::string& key() const { return name.empty() ? field : name; }
+  /// The parameter as `caller` names it: "'Maximum steps' (maxSteps)", "--max-steps", "max_steps",
+  /// "flow.maxSteps".
+  std::string describe(Caller caller) const;
 };
 
 struct FilterSpec {
   FilterId id = FilterId::Fairing;
   std::string name;  ///< the menu entry and the .mlx filter name, fixed forever
   std::string info;  ///< HTML help shown at the top of MeshLab's dialog
+  /// Every row: MeshLab's in its dialog's order (skip the rows without an .mlx name), the others
+  /// among them where they read best in the CLI's --help.
   std::vector<ParamSpec> params;
 
-  /// The parameter called `name`, or nullptr.
+  /// The row whose .mlx name is `name`, or nullptr.
   const ParamSpec* param(const std::string& name) const;
+  /// The row with ParamSpec::key() `key`, or nullptr.
+  const ParamSpec* row(const std::string& key) const;
 };
 
 /// What the defaults depend on: the mesh the filter is about to run on.
@@ -67,25 +115,42 @@ FilterSpec filterSpec(FilterId id, const MeshFacts& mesh);
 /// The filter called `name` (exact match, as meshlabserver matches), if it is one of ours.
 std::optional<FilterId> findFilter(const std::string& name);
 
-/// Parameter values of one filter application, by name. Floats are stored as MeshLab holds them
-/// (float, widened to double) so the plugin and `elastica run` compute with identical inputs.
+/// Parameter values of one filter application, by ParamSpec::key(). Floats from MeshLab are
+/// stored as MeshLab holds them (float, widened to double) so the plugin and `elastica run`
+/// compute with identical inputs.
 class ParamValues {
  public:
-  /// Every parameter at its default.
+  /// Every MeshLab parameter at its dialog default.
   static ParamValues defaults(const FilterSpec& spec);
 
-  void set(const std::string& name, double value) { values_[name] = value; }
-  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  void set(const std::string& key, double value) { values_[key] = value; }
+  bool has(const std::string& key) const { return values_.count(key) != 0; }
 
-  /// @throws InvalidInputError if `name` has no value (a programming error in the caller).
-  bool getBool(const std::string& name) const;
-  int getInt(const std::string& name) const;
-  double getFloat(const std::string& name) const;
-  int getEnum(const std::string& name) const;
+  /// @throws InvalidInputError if `key` has no value (a programming error in the caller).
+  bool getBool(const std::string& key) const;
+  int getInt(const std::string& key) const;
+  double getFloat(const std::string& key) const;
+  int getEnum(const std::string& key) const;
 
  private:
-  double get(const std::string& name) const;
+  double get(const std::string& key) const;
   std::map<std::string, double> values_;
 };
+
+/// Checks `value` of row `p` as `caller` gives it (an AbsPerc value is a fraction of the diagonal
+/// outside MeshLab): in range, an Enum index in its table.
+/// @throws InvalidInputError naming the parameter as `caller` does, its range and the value.
+void checkValue(const ParamSpec& p, double value, Caller caller);
+
+/// The options `v` stands for: a default JobOptions with every value of `v` checked (checkValue)
+/// and written into its field. Outside MeshLab an AbsPerc fraction is multiplied by `diagonal`.
+/// @throws InvalidInputError as checkValue.
+JobOptions readJob(const FilterSpec& spec, const ParamValues& v, Caller caller, double diagonal = 0);
+
+/// Checks the options every entry point's run needs against the table's ranges (the values the
+/// rows read back, named by their fields), so a caller of the C++ API that filled the options
+/// itself meets the checks the faces' values meet.
+/// @throws InvalidInputError naming the field.
+void checkOptions(FilterId id, const JobOptions& job);
 
 }  // namespace elastica::app
