@@ -211,9 +211,10 @@ TEST(Curvature, PaperLambdaRespectsActiveMask) {
   for (int v = 0; v < m.vertexCount(); ++v) EXPECT_EQ(c.Hflow[v], c.H[v]);
 }
 
-// The output of a fill of a large scan is measured in pieces: the same H and K at every vertex as
-// the whole-mesh measurement, the energy to rounding, the topology's counts exactly; on closed
-// and open meshes, pieces far smaller than the mesh.
+// A large mesh (the output of a fill, `elastica curvature`) is measured in pieces: the same H and K
+// at every vertex as the whole-mesh measurement, the energy to rounding, the topology's and the
+// degenerate elements' counts exactly; on closed and open meshes and one with a collapsed edge
+// (two zero-area faces), pieces far smaller than the mesh.
 TEST(Curvature, MeasuredInPiecesAsWhole) {
   TriMesh open = shapes::icosphere(1.0, 3);
   std::vector<Face> kept;
@@ -222,7 +223,10 @@ TEST(Curvature, MeasuredInPiecesAsWhole) {
   open.faces = kept;  // a cap cut away, its pole vertex left isolated
   TriMesh noisy = shapes::torus(3, 1, 40, 20);
   shapes::addRadialNoise(noisy, 0.05, 7);
-  for (const TriMesh& m : {open, noisy, shapes::grid(20, 30)}) {
+  TriMesh collapsed = shapes::grid(20, 30);
+  collapsed.positions[45] = collapsed.positions[46];
+  ASSERT_GT(measureCurvature(collapsed).degenerate.zeroLengthEdges, 0u);
+  for (const TriMesh& m : {open, noisy, shapes::grid(20, 30), collapsed}) {
     const MeshCurvature whole = measureCurvature(m);
     for (int piece : {97, 500}) {
       const MeshCurvature parts = measureCurvatureInPieces(m, {}, piece);
@@ -236,6 +240,8 @@ TEST(Curvature, MeasuredInPiecesAsWhole) {
       EXPECT_EQ(parts.boundaryEdges, whole.boundaryEdges);
       EXPECT_EQ(parts.degenerate.isolatedVertices, whole.degenerate.isolatedVertices);
       EXPECT_EQ(parts.degenerate.zeroAreaVertices, whole.degenerate.zeroAreaVertices);
+      EXPECT_EQ(parts.degenerate.zeroAreaFaces, whole.degenerate.zeroAreaFaces);
+      EXPECT_EQ(parts.degenerate.zeroLengthEdges, whole.degenerate.zeroLengthEdges);
     }
   }
 }

@@ -23,8 +23,10 @@ enum class VertexArea {
 /// What a geometry pass found degenerate. Degenerate elements give finite values (zero
 /// contributions) and are counted here, never NaN.
 struct DegeneracyCounts {
-  std::size_t zeroAreaFaces = 0;     ///< faces with area below 1e-12 · (mean edge length)²
-  std::size_t zeroLengthEdges = 0;   ///< edges shorter than 1e-12 · mean edge length
+  static constexpr double kRelativeArea = 1e-12;    ///< of the mean edge length squared
+  static constexpr double kRelativeLength = 1e-12;  ///< of the mean edge length
+  std::size_t zeroAreaFaces = 0;     ///< faces with area at most kRelativeArea · (mean edge length)²
+  std::size_t zeroLengthEdges = 0;   ///< edges at most kRelativeLength · mean edge length long
   std::size_t zeroAreaVertices = 0;  ///< vertices in faces but with ~zero area or no normal: H = K = 0
   std::size_t isolatedVertices = 0;  ///< vertices in no face: inactive everywhere
   std::size_t total() const { return zeroAreaFaces + zeroLengthEdges + zeroAreaVertices + isolatedVertices; }

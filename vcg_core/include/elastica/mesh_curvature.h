@@ -46,8 +46,8 @@ MeshCurvature measureCurvature(const TriMesh& mesh, const CurvatureMeasureOption
 /// 2.2-million-vertex scan took 1.1 GB, ten times the mesh's bytes). H and K are
 /// measureCurvature()'s (each vertex has its whole fan, listed in the same order), but for faces
 /// degenerate to 1e-12 of the edge length (the threshold follows each piece's mean edge length);
-/// the energy is summed piece by piece; eulerCharacteristic and boundaryEdges count each edge once.
-/// Of the degenerate counts only zeroAreaVertices and isolatedVertices are counted. The paper's λ
+/// the energy is summed piece by piece; eulerCharacteristic, boundaryEdges and the degenerate
+/// counts count each edge and face once (degenerate at the piece's mean edge length). The paper's λ
 /// rule (opt.curvature.h2k = PaperLambda) needs the whole mesh, and a mesh of at most
 /// `pieceVertices` vertices is one piece: both are measureCurvature().
 /// @throws InvalidInputError as measureCurvature() (a face that repeats a vertex or a non-manifold

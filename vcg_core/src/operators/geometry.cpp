@@ -11,8 +11,8 @@ namespace {
 
 // Scale-relative floors (in units of the mean edge length ℓ): below them a face or an edge is
 // degenerate. Relative so that the result does not depend on the model's units.
-constexpr double kRelativeLengthFloor = 1e-12;
-constexpr double kRelativeAreaFloor = 1e-12;
+constexpr double kRelativeLengthFloor = DegeneracyCounts::kRelativeLength;
+constexpr double kRelativeAreaFloor = DegeneracyCounts::kRelativeArea;
 // |cot| is clamped: a needle triangle must not dominate the Laplacian (angles under ~0.06°).
 constexpr double kCotClamp = 1e3;
 

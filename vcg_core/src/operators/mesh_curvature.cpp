@@ -86,12 +86,20 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
       out.K[global[i]] = c.K[i];
       if (!geo.isRegular(static_cast<int>(i))) ++out.degenerate.zeroAreaVertices;
     }
-    // Each edge once: in the piece of its smaller end.
+    // Each edge once: in the piece of its smaller end; each face once: in the piece of its
+    // smallest vertex. Degenerate as Geometry counts them (geometry.h), at the piece's mean edge.
+    const double lengthFloor = DegeneracyCounts::kRelativeLength * geo.meanEdgeLength;
     for (int e = 0; e < topo.edgeCount(); ++e) {
       const auto& ev = topo.edgeVertices(e);
       if (!owned(std::min(global[ev[0]], global[ev[1]]))) continue;
       ++edges;
       out.boundaryEdges += topo.isBoundaryEdge(e);
+      out.degenerate.zeroLengthEdges += geo.edgeLength[e] <= lengthFloor;
+    }
+    for (int f = 0; f < topo.faceCount(); ++f) {
+      const Face& t = piece.faces[f];
+      if (owned(std::min({global[t[0]], global[t[1]], global[t[2]]})))
+        out.degenerate.zeroAreaFaces += geo.faceNormal[f].isZero(0);  // a degenerate face's normal
     }
     for (int v : global) local[v] = -1;
   }
