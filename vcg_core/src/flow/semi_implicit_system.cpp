@@ -30,48 +30,77 @@ void SemiImplicitSystem::buildPattern(const Topology& topo, const std::vector<st
   // ring (i is u or a neighbour of u; the row is i or a neighbour of i, free), and the diagonal.
   // Built column by column, straight into the compressed arrays: through 8 million triplets
   // (Eigen's setFromTriplets), one pattern of the armadillo's 1,978-edge hole cost about a second,
-  // and every edge flip of the flow makes a new one.
+  // and every edge flip of the flow makes a new one. The products' slots are found in the same
+  // pass: while column r is being written, a scatter array holds where each of its rows lands, and
+  // every active i around u reads the slots of its products (·, r) from it (a binary search per
+  // product, after the fact, was half of the pattern's time).
+  const int nv = topo.vertexCount();
   std::vector<int> vertexOfRow(n, -1);
-  for (int v = 0; v < topo.vertexCount(); ++v)
+  for (int v = 0; v < nv; ++v)
     if (freeIndex[v] >= 0) vertexOfRow[freeIndex[v]] = v;
-  std::vector<int> outer(n + 1, 0), inner, rows;
+  // Where each active vertex's m × m products start in slot_ (assembleMatrix's order).
+  std::vector<int> productStart(nv + 1, 0);
+  for (int i = 0; i < nv; ++i) {
+    int m = 0;
+    if (active[i]) {
+      for (int k = topo.ringBegin(i); k < topo.ringEnd(i); ++k) m += freeIndex[topo.ringVertex(k)] >= 0;
+      m += freeIndex[i] >= 0;
+    }
+    productStart[i + 1] = productStart[i] + m * m;
+  }
+  slot_.assign(productStart[nv], -1);
+  std::vector<int> outer(n + 1, 0), inner, rows, around;
   inner.reserve(static_cast<std::size_t>(n) * 20);
-  auto closedRing = [&](int i) {
-    if (!active[i]) return;
-    freeColumn(topo, freeIndex, i, [](int) { return 0.0; }, column_);
-    for (const auto& entry : column_) rows.push_back(entry.first);
-  };
+  std::vector<int> where(n, -1);         // row → its slot in the column being written
+  std::vector<int> seen(n, -1);          // row → the last column that listed it
+  std::vector<int> columnOf;             // the closed free columns of the vertices around u, one after another
+  std::vector<int> columnStart;
   for (int c = 0; c < n; ++c) {
     const int u = vertexOfRow[c];
     rows.assign(1, c);
+    seen[c] = c;
+    around.clear();
+    columnOf.clear();
+    columnStart.assign(1, 0);
+    auto closedRing = [&](int i) {
+      if (!active[i]) return;
+      freeColumn(topo, freeIndex, i, [](int) { return 0.0; }, column_);
+      around.push_back(i);
+      for (const auto& entry : column_) {
+        columnOf.push_back(entry.first);
+        if (seen[entry.first] != c) seen[entry.first] = c, rows.push_back(entry.first);
+      }
+      columnStart.push_back(static_cast<int>(columnOf.size()));
+    };
     closedRing(u);
     for (int k = topo.ringBegin(u); k < topo.ringEnd(u); ++k) closedRing(topo.ringVertex(k));
     std::sort(rows.begin(), rows.end());
-    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    const int first = static_cast<int>(inner.size());
+    for (std::size_t j = 0; j < rows.size(); ++j) where[rows[j]] = first + static_cast<int>(j);
     inner.insert(inner.end(), rows.begin(), rows.end());
     outer[c + 1] = static_cast<int>(inner.size());
+    // Products (a, b) of vertex i with b = this column: slot_[start + a·m + b] (i's free column
+    // lists u once, at position b).
+    for (std::size_t t = 0; t < around.size(); ++t) {
+      const int* col = columnOf.data() + columnStart[t];
+      const int m = columnStart[t + 1] - columnStart[t];
+      int b = 0;
+      while (col[b] != c) ++b;
+      int* out = slot_.data() + productStart[around[t]] + b;
+      for (int a = 0; a < m; ++a) out[a * m] = where[col[a]];
+    }
   }
   K_.resize(n, n);
   K_.resizeNonZeros(static_cast<Eigen::Index>(inner.size()));
   std::copy(outer.begin(), outer.end(), K_.outerIndexPtr());
   std::copy(inner.begin(), inner.end(), K_.innerIndexPtr());
   std::fill(K_.valuePtr(), K_.valuePtr() + inner.size(), 0.0);
-  // Column-major: entry (r1, r2) is in column r2, among its sorted row indices.
-  auto slotOf = [&](int r1, int r2) {
-    const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[r2];
-    const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[r2 + 1];
-    return static_cast<int>(std::lower_bound(begin, end, r1) - K_.innerIndexPtr());
-  };
-  // The slots of the products, in the order assembleMatrix makes them.
-  slot_.clear();
-  for (int i = 0; i < topo.vertexCount(); ++i) {
-    if (!active[i]) continue;
-    freeColumn(topo, freeIndex, i, [](int) { return 0.0; }, column_);
-    for (const auto& a : column_)
-      for (const auto& b : column_) slot_.push_back(slotOf(a.first, b.first));
-  }
   diagonalSlot_.resize(n);
-  for (int r = 0; r < n; ++r) diagonalSlot_[r] = slotOf(r, r);
+  for (int r = 0; r < n; ++r) {
+    const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[r];
+    const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[r + 1];
+    diagonalSlot_[r] = static_cast<int>(std::lower_bound(begin, end, r) - K_.innerIndexPtr());
+  }
   rhs_.resize(n);
   patterned_ = true;
 }

@@ -62,6 +62,19 @@ class PatchEditor {
     return edges;
   }
 
+  // The edges of the live patch faces at the vertices from `first` on, as patchEdges() lists them.
+  std::vector<std::pair<int, int>> edgesAt(int first) const {
+    std::vector<std::pair<int, int>> edges;
+    for (int v = first; v < m_.vertexCount(); ++v)
+      for (int f : vertexFaces_[v])
+        if (patch_[f])
+          for (int u : m_.faces[f])
+            if (u != v) edges.push_back(std::minmax(u, v));
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    return edges;
+  }
+
   double length(int a, int b) const { return (m_.positions[a] - m_.positions[b]).norm(); }
   // The edge length wanted between a and b (their sigmas' mean times the options' lengthScale),
   // and the sigma a vertex made between them carries (without the scale).
@@ -164,22 +177,49 @@ class PatchEditor {
   // result does not depend on the thread count); a move that would turn one of the vertex's faces
   // over (against the neighbours' current positions) is halved until it does not, or dropped.
   // Parallel since relaxing was half of the remeshing to the border's density on the
-  // armadillo's 1,978-edge hole (3.2 s of 7.1 s, 25 passes over 190,000 vertices).
+  // armadillo's 1,978-edge hole (3.2 s of 7.1 s, 25 passes over 190,000 vertices). The passes of
+  // one round share the neighbour lists (relaxPasses() builds them once): sorting each vertex's
+  // ring anew in every pass was a third of the relaxation.
+  void relaxPasses(int passes) {
+    if (passes <= 0) return;
+    const int nv = m_.vertexCount();
+    ringOffset_.assign(nv + 1, 0);
+    ringVertex_.clear();
+    std::vector<int> ring;
+    for (int v = 0; v < nv; ++v) {
+      if (movable_[v] && !vertexFaces_[v].empty()) {
+        neighbours(v, ring);
+        ringVertex_.insert(ringVertex_.end(), ring.begin(), ring.end());
+      }
+      ringOffset_[v + 1] = static_cast<int>(ringVertex_.size());
+    }
+    for (int k = 0; k < passes; ++k) relax();
+  }
+
   void relax() {
     next_ = m_.positions;
+    // Each face's normal at the pass's start, once (each of its corners read it up to five times).
+    faceNormal_.resize(m_.faces.size());
+    parallelFor(m_.faceCount(), [&](int f) {
+      const Face& t = m_.faces[f];
+      faceNormal_[f] = faceNormal(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]);
+    });
     parallelFor(m_.vertexCount(), [&](int v) {
       if (!movable_[v] || vertexFaces_[v].empty()) return;
-      thread_local std::vector<int> ring;  // see neighbours(v, out)
       Vec3 n = Vec3::Zero();
-      for (int f : vertexFaces_[v]) n += normalOf(f, v, m_.positions[v]);
-      neighbours(v, ring);
+      for (int f : vertexFaces_[v]) n += faceNormal_[f];
       Vec3 c = Vec3::Zero();
-      for (int u : ring) c += m_.positions[u];
-      Vec3 delta = c / static_cast<double>(ring.size()) - m_.positions[v];
+      for (int k = ringOffset_[v]; k < ringOffset_[v + 1]; ++k) c += m_.positions[ringVertex_[k]];
+      Vec3 delta = c / static_cast<double>(ringOffset_[v + 1] - ringOffset_[v]) - m_.positions[v];
       const double nn = n.squaredNorm();
       if (nn > 0) delta -= delta.dot(n) / nn * n;
+      auto keepsTurned = [&](const Vec3& p) {
+        for (int f : vertexFaces_[v])
+          if (!turnsLittle(faceNormal_[f], normalOf(f, v, p))) return false;
+        return true;
+      };
       for (int halving = 0; halving < 4; ++halving, delta *= 0.5) {
-        if (keepsFacesTurned(v, m_.positions[v] + delta)) {
+        if (keepsTurned(m_.positions[v] + delta)) {
           next_[v] += delta;
           break;
         }
@@ -274,19 +314,13 @@ class PatchEditor {
     for (int k = 0; k < 3; ++k) q[k] = t[k] == v ? p : m_.positions[t[k]];
     return faceNormal(q[0], q[1], q[2]);
   }
-  bool keepsFacesTurned(int v, const Vec3& p) const {
-    for (int f : vertexFaces_[v])
-      if (!turnsLittle(normalOf(f, v, m_.positions[v]), normalOf(f, v, p))) return false;
-    return true;
-  }
 
   std::vector<int> neighbours(int v) const {
     std::vector<int> out;
     neighbours(v, out);
     return out;
   }
-  // The same into `out` (relax() reuses one buffer per thread: an allocation per vertex and pass
-  // showed in profiles of large patches).
+  // The same into `out` (no allocation per vertex: it showed in profiles of large patches).
   void neighbours(int v, std::vector<int>& out) const {
     out.clear();
     for (int f : vertexFaces_[v])
@@ -314,6 +348,8 @@ class PatchEditor {
   std::vector<std::uint8_t> faceAlive_;
   std::vector<std::vector<int>> vertexFaces_;
   std::vector<Vec3> next_;  // relax()'s new positions, reused
+  std::vector<int> ringOffset_, ringVertex_;  // relaxPasses()' neighbour lists (CSR)
+  std::vector<Vec3> faceNormal_;              // relax()'s face normals at the pass's start
   // compact() refills dead slots from the end of the face list: while the patch keeps at least as
   // many faces as it has slots before the last face outside it, no face outside it moves.
   int minPatchFaces_ = 0, livePatchFaces_ = 0;
@@ -332,18 +368,23 @@ void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vec
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt) {
   PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale);
   for (int round = 0; round < opt.iterations; ++round) {
+    // A split pass changes no length and no edge's faces' flags: the next pass can only split
+    // an edge at a vertex the pass made, and looks at those alone (in the same order).
+    std::vector<std::pair<int, int>> edges = patch.patchEdges();
     for (int pass = 0; pass < kMaxSplitPasses; ++pass) {
+      const int made = mesh.vertexCount();
       bool any = false;
-      for (const auto& [a, b] : patch.patchEdges()) {
+      for (const auto& [a, b] : edges) {
         if (opt.maxVertices > 0 && mesh.vertexCount() >= opt.maxVertices) break;
         if (patch.length(a, b) > kSplitFactor * patch.target(a, b)) any = patch.split(a, b) || any;
       }
       if (!any) break;
+      edges = patch.edgesAt(made);
     }
     for (const auto& [a, b] : patch.patchEdges())
       if (patch.length(a, b) < kCollapseFactor * patch.target(a, b)) patch.collapseShort(a, b);
     for (const auto& [a, b] : patch.patchEdges()) patch.flipForValence(a, b);
-    for (int k = 0; k < opt.relaxPasses; ++k) patch.relax();
+    patch.relaxPasses(opt.relaxPasses);
   }
   patch.compact();
 }
