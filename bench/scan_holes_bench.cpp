@@ -29,7 +29,7 @@
 #include <elastica/topology.h>
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
-#include "restoration/submesh.h"
+#include "mesh/submesh.h"
 
 #include <algorithm>
 #include <chrono>

@@ -2,7 +2,9 @@
 # Checks the "Layout" section of docs/architecture.md against the tree (run by ctest as readme_layout):
 #  - every path it names (a word with a slash) exists;
 #  - every top-level folder, every folder of vcg_core/ and every source file of the core's public
-#    headers, of vcg_core/src/, vcg_core/io/ and app/ is named there (a file by its name or its stem).
+#    headers, of vcg_core/src/, vcg_core/io/ and app/ is named there (a file by its name or its stem);
+#  - the core's private tiers include only downward: support <- operators <- mesh <- flow <-
+#    restoration (a file of one tier includes "T/..." headers of its own tier or lower ones only).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
@@ -38,5 +40,14 @@ done
 for f in $(git ls-files --cached --others --exclude-standard vcg_core/include/elastica vcg_core/src vcg_core/io app | grep -E '\.(h|cpp)$'); do
   named "$(basename "$f")" || missing "$f is not named in $page's layout"
 done
-[[ $fail == 0 ]] && echo "check-layout: the layout in $page matches the tree"
+tiers=(support operators mesh flow restoration)
+for ((i = 0; i < ${#tiers[@]}; ++i)); do
+  for ((j = i + 1; j < ${#tiers[@]}; ++j)); do
+    while IFS= read -r hit; do
+      [[ -n "$hit" ]] && missing "$hit: the ${tiers[i]} tier includes the ${tiers[j]} tier above it"
+    done < <(grep -rn "#include \"${tiers[j]}/" "vcg_core/src/${tiers[i]}" 2>/dev/null || true)
+  done
+done
+
+[[ $fail == 0 ]] && echo "check-layout: the layout in $page matches the tree and the tiers include downward"
 exit $fail

@@ -1,4 +1,4 @@
-// Isotropic remeshing of a hole's patch (restoration/patch_remeshing, Botsch & Kobbelt 2004):
+// Isotropic remeshing of a hole's patch (mesh/patch_remeshing, Botsch & Kobbelt 2004):
 // only the patch's own vertices and faces change; slivers go.
 #include "hole_patches.h"
 #include "test_meshes.h"
@@ -8,7 +8,7 @@
 #include <elastica/topology.h>
 #include "restoration/biharmonic_embedding.h"
 #include "restoration/patch_refinement.h"
-#include "restoration/patch_remeshing.h"
+#include "mesh/patch_remeshing.h"
 
 #include <gtest/gtest.h>
 

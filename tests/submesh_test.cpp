@@ -1,9 +1,9 @@
-// Submeshes (restoration/submesh): the piece of a mesh within k face-rings of some vertices, with
+// Submeshes (mesh/submesh): the piece of a mesh within k face-rings of some vertices, with
 // maps back to the whole; hole filling works on such pieces.
 #include "test_meshes.h"
 
 #include <elastica/shapes.h>
-#include "restoration/submesh.h"
+#include "mesh/submesh.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 #include "flow/mesh_quality_stage.h"
 #include "flow/constraints.h"
 #include "mesh/self_intersection.h"
-#include "restoration/patch_remeshing.h"
+#include "mesh/patch_remeshing.h"
 
 #include <elastica/geometry.h>
 #include <elastica/mesh_curvature.h>

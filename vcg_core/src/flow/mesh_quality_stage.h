@@ -66,7 +66,7 @@ double largestCurvatureTimesEdge(const Topology& topo, const std::vector<Vec3>& 
 double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& selection,
                                        BoundaryMode mode);
 
-/// Isotropic remeshing (split, collapse, flip, tangential relaxation: restoration/patch_remeshing.h)
+/// Isotropic remeshing (split, collapse, flip, tangential relaxation: mesh/patch_remeshing.h)
 /// of the faces whose three vertices all move, toward the edge length of an equilateral triangle
 /// of the region's mean face area (so the vertex count stays about the same) or, with
 /// `curvatureAdaptive`, toward 0.4/κ where that is shorter (κ the largest principal curvature

@@ -3,7 +3,7 @@
 #pragma once
 
 #include <elastica/topology.h>
-#include "restoration/submesh.h"
+#include "mesh/submesh.h"
 
 #include <functional>
 #include <limits>

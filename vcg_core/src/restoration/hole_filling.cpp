@@ -10,9 +10,9 @@
 #include "restoration/patch_angles.h"
 #include "restoration/patch_measure.h"
 #include "restoration/patch_refinement.h"
-#include "restoration/patch_remeshing.h"
+#include "mesh/patch_remeshing.h"
 #include "restoration/rim_rule.h"
-#include "restoration/submesh.h"
+#include "mesh/submesh.h"
 #include "mesh/tangential_relaxation.h"
 #include "support/parallel.h"
 

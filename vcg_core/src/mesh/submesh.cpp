@@ -1,4 +1,4 @@
-#include "restoration/submesh.h"
+#include "mesh/submesh.h"
 
 #include <algorithm>
 #include <numeric>

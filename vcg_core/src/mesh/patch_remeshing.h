@@ -2,7 +2,9 @@
 // Multiresolution Modeling", SGP 2004), restricted to the patch's faces: split long edges,
 // collapse short ones, flip toward valence 6, relax tangentially. A deep hole's bi-Laplace patch
 // is stretched unevenly (its vertices come from refining the flat fill); the flow moves vertices
-// along their normals only, so the slivers it starts from are the slivers it ends with.
+// along their normals only, so the slivers it starts from are the slivers it ends with. The flow's
+// quality stages remesh a moving region with it too (flow/mesh_quality_stage.h): it lives in the
+// mesh tier, below both.
 #pragma once
 
 #include <elastica/types.h>

@@ -1,5 +1,5 @@
-#include "restoration/patch_remeshing.h"
-#include "restoration/submesh.h"
+#include "mesh/patch_remeshing.h"
+#include "mesh/submesh.h"
 #include "support/parallel.h"
 
 #include <algorithm>
