@@ -231,8 +231,8 @@ FillHolesResult runFillHoles(TriMesh mesh, const ParamValues& v, const Progress&
 CurvatureResult runCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt) {
   CurvatureResult r;
   // Above a million vertices, in pieces: at 2.6 M a whole-mesh Topology, Geometry and Curvature
-  // took 1,421 MB (meshlabserver reads and writes the file in 483 MB), in pieces 488 MB, but 1.5×
-  // the time (farm-bench, paired): below it the whole mesh's caches stay within 2× of MeshLab's
+  // took 1,421 MB (meshlabserver reads and writes the file in 483 MB), in pieces 580 MB at 1.27×
+  // the time (farm-bench, paired); below it the whole mesh's caches stay within 2× of MeshLab's
   // memory (655 k vertices: 361 MB against 198 MB) and the time is kept.
   constexpr int kPiecesAbove = 1 << 20;
   r.curvature = mesh.vertexCount() > kPiecesAbove ? measureCurvatureInPieces(mesh, opt) : measureCurvature(mesh, opt);

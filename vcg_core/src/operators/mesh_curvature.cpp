@@ -51,6 +51,11 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
   std::vector<int> global;
   TriMesh piece;
   std::vector<std::uint8_t> own;
+  // One piece's caches, their storage reused by the next: fresh ones per piece were given back to
+  // the system and faulted in again.
+  Geometry geo;
+  Curvature c;
+  std::vector<Vec3> laplacianOfP;
   for (int first = 0; first < nv; first += pieceVertices) {
     const int last = std::min(nv, first + pieceVertices);  // the piece's own vertices: [first, last)
     auto owned = [&](int v) { return v >= first && v < last; };
@@ -77,8 +82,8 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
     for (std::size_t i = 0; i < global.size(); ++i) own[i] = owned(global[i]);
 
     const Topology topo(piece.vertexCount(), piece.faces);
-    const Geometry geo = computeGeometry(topo, piece.positions, opt.area);
-    const Curvature c = computeCurvature(topo, geo, piece.positions, opt.curvature);
+    computeGeometry(topo, piece.positions, opt.area, geo);
+    computeCurvature(topo, geo, piece.positions, opt.curvature, c, laplacianOfP);
     out.energy += totalCurvatureEnergy(topo, geo, c, &own);
     for (std::size_t i = 0; i < global.size(); ++i) {
       if (!own[i]) continue;
