@@ -13,6 +13,11 @@ namespace elastica {
 /// Δ_B of the positions: out[i] = (1/A_i) Σ_j C_ij (p_j − p_i); zero where A_i = 0.
 void cotanLaplacian(const Topology& topo, const Geometry& g, const std::vector<Vec3>& p, std::vector<Vec3>& out);
 
+/// The same with the weights given: C_ij per edge of `topo` and A_i per vertex (operators kept
+/// from another state of the mesh, as the fairing amount's filter keeps the input's).
+void cotanLaplacian(const Topology& topo, const std::vector<double>& edgeWeight, const std::vector<double>& vertexArea,
+                    const std::vector<Vec3>& p, std::vector<Vec3>& out);
+
 /// Δ_B of a per-vertex scalar field f.
 void cotanLaplacian(const Topology& topo, const Geometry& g, const std::vector<double>& f,
                     std::vector<double>& out);

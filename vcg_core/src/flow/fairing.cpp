@@ -107,8 +107,8 @@ struct Run {
     return stopped = true;
   }
   bool timeLimited() const { return std::isfinite(timeLimit); }
-  // The step an adaptive scheme may try under FlowOptions::featureSize: a quarter of the flow time
-  // at most, and no more than what remains of it.
+  // The step the semi-implicit scheme may try under FlowOptions::featureSize: a quarter of the
+  // flow time at most, and no more than what remains of it.
   double capped(double tau) const {
     return timeLimited() ? std::min({tau, timeLimit / kFeatureSteps, timeLimit - time}) : tau;
   }
@@ -329,7 +329,6 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
   best = state.mesh();
   while (!run.limitReached()) {
     ++report.steps;
-    tau = run.capped(tau);
     if (!integrator.tryStep(state, tau)) {
       ++report.rejectedSteps;
       crossingsInARow = integrator.lastRejectionCrossed() ? crossingsInARow + 1 : 0;
@@ -436,6 +435,13 @@ void requireMovingVertex(const FlowState& state) {
   }
 }
 
+// The energy where the run's first flow starts (after any refinement before it), as the report's
+// initial energy and the first entry of its history.
+void recordStart(FlowReport& report, FlowState& state) {
+  report.energyInitial = state.energy();
+  report.history.push_back({0, 0, 0, report.energyInitial});
+}
+
 // A stage's record as it starts: its level and the size of the mesh it flows.
 FlowStage beginStage(const FlowState& state, int level) {
   FlowStage stage;
@@ -503,13 +509,12 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   if (opt.scheme == Scheme::Vector && run.timeLimited()) {
     FlowState state(mesh, selection, opt, slider.get());
     requireMovingVertex(state);
-    report.energyInitial = state.energy();
-    report.history.push_back({0, 0, 0, report.energyInitial});
+    recordStart(report, state);
     FlowStage stage = beginStage(state, 0);
     featureSizeStage(state, run, stage);
     endStage(state, stage, 0, run, mesh);  // the run's only stage: it started with the run
     report.seconds = run.elapsed();
-    return report;
+    return report;  // the selection is as it came, and every step is in the history
   }
 
   // The semi-implicit pipeline keeps the mesh fit for the operators (FlowOptions::remesh,
@@ -542,9 +547,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     const bool refineLater = level < opt.subdivisionLevels &&
                              (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
     const double stageStart = run.elapsed();
-    if (first) {  // the energy where the first flow starts (after any refinement before it)
-      report.energyInitial = state.energy();
-      report.history.push_back({0, 0, 0, report.energyInitial});
+    if (first) {
+      recordStart(report, state);
       first = false;
     }
     FlowStage stage = beginStage(state, level);

@@ -2,6 +2,8 @@
 #include "flow/semi_implicit_system.h"
 #include "flow/spd_solver.h"
 
+#include <elastica/laplacian.h>
+
 #include <Eigen/Core>
 
 #include <cmath>
@@ -35,28 +37,17 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau) {
 
 bool PrincipalPartFilter::step(FlowState& state) {
   const Topology& topo = state.topology();
-  const std::vector<std::uint8_t>& active = state.roles().active;
   std::vector<Vec3>& x = state.positions();
   const int nv = topo.vertexCount();
-  // M⁻¹ C X on the active vertices (free and ring 1: all a free vertex's neighbours), then
-  // C of that on the free ones: the right-hand side's C_fa M_aa⁻¹ C_a· X, as the matrix's product.
-  areaLaplacian_.assign(nv, Vec3::Zero());
-  for (int e = 0; e < topo.edgeCount(); ++e) {
-    const auto& ev = topo.edgeVertices(e);
-    const Vec3 d = edgeWeight_[e] * (x[ev[0]] - x[ev[1]]);
-    areaLaplacian_[ev[0]] += d;
-    areaLaplacian_[ev[1]] -= d;
-  }
-  for (int v = 0; v < nv; ++v)
-    areaLaplacian_[v] = active[v] && vertexArea_[v] > 0 ? Vec3(areaLaplacian_[v] / vertexArea_[v]) : Vec3::Zero();
+  // The right-hand side −τ/2 · C M⁻¹ C X = −τ/2 · M Δ_B² X on the free rows (Δ_B = −M⁻¹ C with the
+  // input's weights; a free vertex's neighbours are all active, so Δ_B² there is the matrix's
+  // C_fa M_aa⁻¹ C_a· product).
+  cotanLaplacian(topo, edgeWeight_, vertexArea_, x, laplacian_);
+  cotanLaplacian(topo, edgeWeight_, vertexArea_, laplacian_, bilaplacian_);
   const int rows = static_cast<int>(solver_->system.matrix().rows());
-  Eigen::MatrixXd b = Eigen::MatrixXd::Zero(rows, 3);
-  for (int e = 0; e < topo.edgeCount(); ++e) {
-    const auto& ev = topo.edgeVertices(e);
-    const Vec3 d = (-0.5 * tau_ * edgeWeight_[e]) * (areaLaplacian_[ev[0]] - areaLaplacian_[ev[1]]);
-    if (freeIndex_[ev[0]] >= 0) b.row(freeIndex_[ev[0]]) += d.transpose();
-    if (freeIndex_[ev[1]] >= 0) b.row(freeIndex_[ev[1]]) -= d.transpose();
-  }
+  Eigen::MatrixXd b(rows, 3);
+  for (int v = 0; v < nv; ++v)
+    if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = (-0.5 * tau_ * vertexArea_[v]) * bilaplacian_[v].transpose();
   Eigen::VectorXd column(rows), delta(rows);
   Eigen::MatrixXd displacement(rows, 3);
   for (int c = 0; c < 3; ++c) {

@@ -43,7 +43,7 @@ class PrincipalPartFilter {
   std::unique_ptr<Solver> solver_;
   std::vector<int> freeIndex_;
   std::vector<double> edgeWeight_, vertexArea_;
-  std::vector<Vec3> areaLaplacian_;  // scratch: M⁻¹ C X per vertex
+  std::vector<Vec3> laplacian_, bilaplacian_;  // scratch: Δ_B X and Δ_B² X with the input's weights
   double tau_ = 0;
 };
 
