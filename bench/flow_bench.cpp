@@ -117,7 +117,7 @@ int throughput(const std::vector<long>& sizes, double seconds) {
   for (long size : sizes) {
     const TriMesh m = torusOf(size);
     FlowOptions opt;
-    FlowState state(m, {}, opt, nullptr);
+    FlowState state(m, {}, opt, {}, nullptr);
     ExplicitIntegrator integrator;
     integrator.step(state);  // sizes every cache
     const std::size_t bytes = explicitStepWorkingSetBytes(state, integrator);

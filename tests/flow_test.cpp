@@ -9,6 +9,7 @@
 #include <elastica/fairing.h>
 #include <elastica/shapes.h>
 #include <elastica/subdivision.h>
+#include "flow/fair_masked.h"
 
 #include <gtest/gtest.h>
 
@@ -234,12 +235,13 @@ TEST(Flow, LimitsCancellationAndErrors) {
   FlowOptions bad = explicitOptions();
   bad.stepFactor = -1;
   EXPECT_THROW(fair(m, bad), InvalidInputError);
-  bad = FlowOptions{};
-  bad.maxJump = 0;
-  EXPECT_THROW(fair(m, bad), InvalidInputError);
-  bad = FlowOptions{};
-  bad.flipInterval = 0;
-  EXPECT_THROW(fair(m, bad), InvalidInputError);
+  // The knobs no face sets (flow/internal_flow_options.h) are checked as well.
+  InternalFlowOptions badKnob;
+  badKnob.maxJump = 0;
+  EXPECT_THROW(fairMasked(m, nullptr, FlowOptions{}, badKnob), InvalidInputError);
+  badKnob = InternalFlowOptions{};
+  badKnob.flipInterval = 0;
+  EXPECT_THROW(fairMasked(m, nullptr, FlowOptions{}, badKnob), InvalidInputError);
   EXPECT_EQ(m.positions, noisy.positions);
 }
 

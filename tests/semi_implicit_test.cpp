@@ -103,7 +103,7 @@ TEST(SemiImplicit, AStepFailingOnAFewVerticesIsTakenWithoutThem) {
   mesh.positions[t[2]] = mid + 0.002 * (mesh.positions[t[2]] - mid);
   ASSERT_LT(smallestAngleDegrees(mesh.positions[t[0]], mesh.positions[t[1]], mesh.positions[t[2]]), 0.5);
 
-  FlowState state(mesh, {}, opt, nullptr);
+  FlowState state(mesh, {}, opt, {}, nullptr);
   const double before = state.energy();
   SemiImplicitIntegrator integrator;
   ASSERT_TRUE(integrator.tryStep(state, 0.5));

@@ -99,8 +99,6 @@ struct FlowOptions {
 
   /// Flip non-Delaunay edges among moving vertices at every check (positions untouched); default off.
   bool flipEdges = false;
-  /// With flipEdges: look for flips at every flipInterval-th check only (checks); default 1.
-  int flipInterval = 1;
 
   /// Vector and semi-implicit schemes: the mesh-quality stages around the flow (a working-resolution
   /// floor of 100 + 1,000·genus moving vertices, isotropic and curvature-adaptive remeshing of the
@@ -134,13 +132,6 @@ struct FlowOptions {
   /// Semi-implicit: also stop once a step at the scale of the whole moving region (τ ≥ A²/50)
   /// moves no vertex along its normal by more than this many mean edge lengths (0: off); default 0.
   double shapeTolerance = 0;
-  /// Semi-implicit: start at a tenth of the region's shape scale (τ = A²/500) instead of 0.05 ℓ⁴; default off.
-  bool startAtShapeScale = false;
-  /// Semi-implicit: reject a step that moves a vertex along its normal by more than this many of its
-  /// mean edge lengths; default 2.
-  double maxJump = 2;
-  /// Semi-implicit: shorten a step longer than maxJump to that length instead of rejecting it; default off.
-  bool shortenJumps = false;
   int driftPasses = 2;  ///< semi-implicit: tangential drift passes after an accepted step; default 2
 
   /// Called at every check; return false to cancel (the mesh keeps its last good state).

@@ -4,6 +4,7 @@
 
 #include <elastica/flow.h>
 #include <elastica/types.h>
+#include "flow/internal_flow_options.h"
 
 #include <cstdint>
 #include <vector>
@@ -12,8 +13,10 @@ namespace elastica {
 
 /// As fair(mesh, region, opt) with `*faceSelected` the region's flags (non-zero = in the region),
 /// or as fair(mesh, opt) if faceSelected is null or empty. The flags are refined with the mesh
-/// when it is subdivided (children inherit their parent's flag) and written back.
+/// when it is subdivided (children inherit their parent's flag) and written back. `internal`: the
+/// knobs no face sets (fair() passes the defaults, the hole filler its own).
 /// @throws InvalidInputError also if the flags are not one per face.
-FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt);
+FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt,
+                      const InternalFlowOptions& internal);
 
 }  // namespace elastica

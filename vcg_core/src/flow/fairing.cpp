@@ -58,7 +58,8 @@ constexpr double kVectorShapeTolerance = 0.01;
 // FlowOptions::featureSize: its flow time in at least this many steps.
 constexpr double kFeatureSteps = 4;
 
-void validate(const FlowOptions& o) {
+// `knobs` come from our own code, not from a user; a bad one is refused all the same.
+void validate(const FlowOptions& o, const InternalFlowOptions& knobs) {
   auto bad = [](const std::string& what) { throw InvalidInputError("fair: " + what); };
   if (!(o.stepFactor > 0)) bad("stepFactor must be > 0");
   if (!(o.driftFactor >= 0)) bad("driftFactor must be >= 0");
@@ -70,8 +71,8 @@ void validate(const FlowOptions& o) {
   if (!(o.targetEdgeLength >= 0)) bad("targetEdgeLength must be >= 0");
   if (o.maxSteps < 0 || !(o.maxSeconds >= 0)) bad("maxSteps and maxSeconds must be >= 0");
   if (o.checkInterval < 1) bad("checkInterval must be >= 1");
-  if (o.flipInterval < 1) bad("flipInterval must be >= 1");
-  if (!(o.maxJump > 0)) bad("maxJump must be > 0");
+  if (knobs.flipInterval < 1) bad("flipInterval must be >= 1");
+  if (!(knobs.maxJump > 0)) bad("maxJump must be > 0");
   if (o.driftPasses < 0) bad("driftPasses must be >= 0");
   if (!(o.featureSize >= 0) || !std::isfinite(o.featureSize)) bad("featureSize must be >= 0");
   if (o.featureSize > 0 && o.flow == FlowType::Bilaplacian)
@@ -89,6 +90,7 @@ std::string fmt(double x) {
 // What one stage of the schedule shares with the whole run.
 struct Run {
   const FlowOptions& opt;
+  const InternalFlowOptions& internal;
   FlowReport& report;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   double time = 0;  // flow time
@@ -234,7 +236,7 @@ bool semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
   // A later stage (after a subdivision or a remeshing) starts near its predecessor's last step:
   // its shape is nearly settled already, and growing τ again from 0.05 ℓ⁴ would cost ~15 steps.
   double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
-  if (run.opt.startAtShapeScale) tau = std::max(tau, area0 * area0 / (10 * kShapeScaleFactor));
+  if (run.internal.startAtShapeScale) tau = std::max(tau, area0 * area0 / (10 * kShapeScaleFactor));
   double ceiling = std::numeric_limits<double>::infinity();  // the last step size that failed, raised slowly
   // The window holds, per accepted step, the flow time and the energy the normal steps have taken
   // off so far (drift passes and edge flips excluded: they redistribute vertices, and a stop
@@ -262,8 +264,8 @@ bool semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
     lastTau = accepted;
     // Grow, but stay below the last step that failed, probing upward slowly: a plain ×1.5 / ×0.5
     // controller settles where a third of the attempts fail (ln 1.5 / ln 3), each a wasted solve.
-    // A shortened step (FlowOptions::shortenJumps) went as far as a step may: a larger τ would
-    // only be shortened again.
+    // A shortened step (InternalFlowOptions::shortenJumps) went as far as a step may: a larger τ
+    // would only be shortened again.
     if (!integrator.lastStepShortened()) tau = std::min(tau * kGrow, kCeilingMargin * ceiling);
     ceiling *= kCeilingGrow;
     const double energy = state.energy();
@@ -361,7 +363,7 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
     if (guardEmbedding && state.connectivityVersion() != version && selfIntersects(state.mesh(), &state.roles().activeFace)) {
       FlowOptions noFlips = state.options();  // for the rest of the stage (flips that cross come back)
       noFlips.flipEdges = false;
-      state = FlowState(beforeFlips, state.selection(), noFlips, state.slider());
+      state = FlowState(beforeFlips, state.selection(), noFlips, state.internalOptions(), state.slider());
       state.maintain(area0);
     }
     ++stage.steps;
@@ -484,8 +486,9 @@ void untangleMovingRegion(TriMesh& mesh, const std::vector<std::uint8_t>& select
 
 }  // namespace
 
-FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& requested) {
-  validate(requested);
+FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& requested,
+                      const InternalFlowOptions& internal) {
+  validate(requested, internal);
   // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
   FlowOptions opt = requested;
   // A fairing amount needs no scheme choice: its filter is linear (featureSizeStage).
@@ -495,7 +498,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
   FlowReport report;
   report.scheme = opt.scheme;
-  Run run{opt, report};
+  Run run{opt, internal, report};
 
   std::vector<std::uint8_t> selection = faceSelected ? *faceSelected : std::vector<std::uint8_t>{};
   if (!selection.empty() && selection.size() != mesh.faces.size())
@@ -507,7 +510,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
 
   // A fairing amount keeps the user's vertices and connectivity: no refinement, no remeshing.
   if (opt.scheme == Scheme::Vector && run.timeLimited()) {
-    FlowState state(mesh, selection, opt, slider.get());
+    FlowState state(mesh, selection, opt, internal, slider.get());
     requireMovingVertex(state);
     recordStart(report, state);
     FlowStage stage = beginStage(state, 0);
@@ -542,7 +545,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   for (;; ++level) {
     if (adaptive && remeshMovingRegion(mesh, selection, opt.boundary, true)) ++report.remeshings;
     adaptive = false;
-    FlowState state(mesh, selection, stageOpt, slider.get());
+    FlowState state(mesh, selection, stageOpt, internal, slider.get());
     requireMovingVertex(state);
     const bool refineLater = level < opt.subdivisionLevels &&
                              (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
@@ -562,7 +565,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
                                  quality && !report.inputSelfIntersects, lastTau, best, bestEnergy, neckFormed);
         // The stage's output is its lowest-energy state (before any neck formed).
         if (neckFormed || bestEnergy < state.energy())
-          state = FlowState(best, selection, stageOpt, slider.get());
+          state = FlowState(best, selection, stageOpt, internal, slider.get());
       } else {
         const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
         meshBound = !semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance,
@@ -616,7 +619,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   if (opt.scheme == Scheme::Vector && !quality && !run.stopped &&
       report.stop == StopReason::Converged) {
     untangleMovingRegion(mesh, selection, opt.boundary, true, report);
-    FlowState state(mesh, selection, stageOpt, slider.get());
+    FlowState state(mesh, selection, stageOpt, internal, slider.get());
     FlowStage stage = beginStage(state, level);
     const double stageStart = run.elapsed();
     semiImplicitStage(state, run, stage, opt.energyTolerance, opt.plateauTolerance, false, lastTau);
@@ -629,7 +632,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   return report;
 }
 
-FlowReport fair(TriMesh& mesh, const FlowOptions& opt) { return fairMasked(mesh, nullptr, opt); }
+FlowReport fair(TriMesh& mesh, const FlowOptions& opt) { return fairMasked(mesh, nullptr, opt, {}); }
 
 FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt) {
   std::vector<std::uint8_t> selection;
@@ -638,7 +641,7 @@ FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt) {
   } catch (const InvalidInputError& e) {
     throw InvalidInputError(std::string("fair: the region's ") + e.what());
   }
-  FlowReport report = fairMasked(mesh, &selection, opt);
+  FlowReport report = fairMasked(mesh, &selection, opt, {});
   report.regionFaces = FaceSet::fromFlags(selection).faces;
   return report;
 }

@@ -22,9 +22,10 @@ constexpr double kSlideRate = 0.1;
 }  // namespace
 
 FlowState::FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected, const FlowOptions& opt,
-                     BoundarySlider* slider)
+                     const InternalFlowOptions& internal, BoundarySlider* slider)
     : mesh_(std::move(mesh)),
       opt_(opt),
+      internal_(internal),
       selection_(faceSelected),
       topo_(mesh_.vertexCount(), mesh_.faces),
       slider_(slider) {
@@ -44,7 +45,7 @@ void FlowState::buildConnectivity() {
 
 void FlowState::maintain(double area) {
   if (scaleFree_) normalizeArea(area);
-  if (!opt_.flipEdges || ++checksSinceFlipSearch_ < opt_.flipInterval) return;
+  if (!opt_.flipEdges || ++checksSinceFlipSearch_ < internal_.flipInterval) return;
   checksSinceFlipSearch_ = 0;
   if (mayFlip() && flipToDelaunay(mesh_, roles_.free) > 0) {
     topo_ = Topology(mesh_.vertexCount(), mesh_.faces);

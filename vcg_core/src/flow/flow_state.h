@@ -10,6 +10,7 @@
 #include <elastica/topology.h>
 #include "flow/boundary_slide.h"
 #include "flow/constraints.h"
+#include "flow/internal_flow_options.h"
 
 #include <cstdint>
 #include <vector>
@@ -21,9 +22,10 @@ class FlowState {
   /// `faceSelected`: one byte per face, or empty for all faces. `slider` (Slide mode) must outlive
   /// the state. @throws InvalidInputError on bad connectivity.
   FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected, const FlowOptions& opt,
-            BoundarySlider* slider);
+            const InternalFlowOptions& internal, BoundarySlider* slider);
 
   const FlowOptions& options() const { return opt_; }
+  const InternalFlowOptions& internalOptions() const { return internal_; }
   const TriMesh& mesh() const { return mesh_; }
   const Topology& topology() const { return topo_; }
   const VertexRoles& roles() const { return roles_; }
@@ -75,12 +77,13 @@ class FlowState {
 
   TriMesh mesh_;
   FlowOptions opt_;
+  InternalFlowOptions internal_;
   std::vector<std::uint8_t> selection_;
   Topology topo_;
   VertexRoles roles_;
   BoundarySlider* slider_;
   long long connectivityVersion_ = 0;
-  int checksSinceFlipSearch_ = 0;  // FlowOptions::flipInterval
+  int checksSinceFlipSearch_ = 0;  // InternalFlowOptions::flipInterval
   bool evaluated_ = false;          // geometry and curvature of the current positions
   bool geometryEvaluated_ = false;  // geometry (and active areas) only
   bool energyEvaluated_ = false;    // the energy is computed when asked for, not at every explicit step

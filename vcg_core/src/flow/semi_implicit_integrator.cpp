@@ -16,8 +16,8 @@
 namespace elastica {
 namespace {
 
-// Acceptance: a vertex may move at most FlowOptions::maxJump of its mean edge lengths, and the
-// energy may not rise by more than this (relative): stricter stalls at the noise floor.
+// Acceptance: a vertex may move at most InternalFlowOptions::maxJump of its mean edge lengths, and
+// the energy may not rise by more than this (relative): stricter stalls at the noise floor.
 constexpr double kEnergySlack = 1e-4;
 
 // Large systems are solved by conjugate gradients preconditioned with an earlier step's
@@ -141,7 +141,7 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   const double energyLimit = energyBefore * (1 + kEnergySlack) + 1e-12;
   faceNormalBefore_ = geo.faceNormal;
   noteVertexEnergies(state, vertexEnergyBefore_);
-  // The largest jump, as a multiple of what FlowOptions::maxJump allows at its vertex.
+  // The largest jump, as a multiple of what InternalFlowOptions::maxJump allows at its vertex.
   double overshoot = 0;
   for (int v = 0; v < nv; ++v) {
     const int r = freeIndex_[v];
@@ -150,12 +150,12 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
     double ring = 0;
     for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k)
       ring += (saved_[topo.ringVertex(k)] - saved_[v]).norm();
-    const double allowed = state.options().maxJump * ring / std::max(1, topo.valence(v));
+    const double allowed = state.internalOptions().maxJump * ring / std::max(1, topo.valence(v));
     if (delta[r] != 0) overshoot = std::max(overshoot, std::abs(delta[r]) / allowed);
   }
   if (!std::isfinite(overshoot)) return reject();  // a vertex whose edges have no length moves
   lastStepShortened_ = overshoot > 1;
-  if (lastStepShortened_ && !state.options().shortenJumps) return reject();
+  if (lastStepShortened_ && !state.internalOptions().shortenJumps) return reject();
   const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;
   for (int v = 0; v < nv; ++v) {
     const int r = freeIndex_[v];

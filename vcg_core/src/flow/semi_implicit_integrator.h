@@ -1,9 +1,9 @@
 // The semi-implicit scheme (ours; the paper's future work): linearly implicit in the stiff
 // fourth-order part, (M + τ/2 C M⁻¹ C) δ = τ M F for the normal displacement δ, everything else
 // lagged (semi_implicit_system.h). A step is accepted only if no active face turns over, no vertex
-// jumps more than FlowOptions::maxJump of its mean edge lengths, (elastica) the energy does not rise and, with the
-// embedding guard on, no moved face crosses another; tangential drift passes follow under the
-// same rules (the energy before the step as the limit).
+// jumps more than InternalFlowOptions::maxJump of its mean edge lengths, (elastica) the energy
+// does not rise and, with the embedding guard on, no moved face crosses another; tangential drift
+// passes follow under the same rules (the energy before the step as the limit).
 #pragma once
 
 #include "flow/flow_state.h"
@@ -27,8 +27,8 @@ class SemiImplicitIntegrator {
   /// How much the last accepted step's normal displacement lowered the energy (its drift passes
   /// not counted: they even out triangles and may move E either way).
   double lastEnergyDecrease() const { return lastEnergyDecrease_; }
-  /// Whether the last attempt would have moved a vertex farther than FlowOptions::maxJump (with
-  /// FlowOptions::shortenJumps, the accepted step was shortened to it).
+  /// Whether the last attempt would have moved a vertex farther than InternalFlowOptions::maxJump
+  /// (with InternalFlowOptions::shortenJumps, the accepted step was shortened to it).
   bool lastStepShortened() const { return lastStepShortened_; }
   /// Rejects a step after which (with its drift passes) an active face crosses another face
   /// (mesh/self_intersection.h). Off by default: an input whose faces already cross has nothing to keep.

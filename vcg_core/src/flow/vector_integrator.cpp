@@ -114,8 +114,8 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   normalBefore_ = geo.vertexNormal;
   if (!solve(bending_.gradient, tau)) return false;
 
-  // No vertex moves farther than FlowOptions::maxJump of its mean edge lengths: a longer step is
-  // shortened (every displacement by the same factor), which keeps it a descent direction.
+  // No vertex moves farther than InternalFlowOptions::maxJump of its mean edge lengths: a longer
+  // step is shortened (every displacement by the same factor), which keeps it a descent direction.
   double overshoot = 0;
   for (int v = 0; v < nv; ++v) {
     if (freeIndex_[v] < 0) continue;
@@ -123,7 +123,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     if (!std::isfinite(move)) return false;
     double ring = 0;
     for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ring += (saved_[topo.ringVertex(k)] - saved_[v]).norm();
-    const double allowed = state.options().maxJump * ring / std::max(1, topo.valence(v));
+    const double allowed = state.internalOptions().maxJump * ring / std::max(1, topo.valence(v));
     if (move > 0) overshoot = std::max(overshoot, move / allowed);
   }
   if (!std::isfinite(overshoot)) return false;

@@ -33,7 +33,7 @@ class VectorIntegrator {
   double lastMove() const { return lastMove_; }
   /// The largest normal component |δ_i · N_i| of the last accepted step.
   double lastNormalMove() const { return lastNormalMove_; }
-  /// Whether the last attempt was shortened to FlowOptions::maxJump.
+  /// Whether the last attempt was shortened to InternalFlowOptions::maxJump.
   bool lastStepShortened() const { return lastStepShortened_; }
   /// How far the last accepted step went along its solve's direction (1, or up to 8 when W kept
   /// falling beyond it).
