@@ -143,3 +143,48 @@ TEST(SpdSolver, PreconditionedSolveWithAnotherMatrixFactorisation) {
     EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-10);
   }
 }
+
+// Several right-hand sides at once (the vector scheme's x, y and z): each column converges as it
+// would alone, to the same solution, and one column that needs nothing (b = 0) stays 0.
+TEST(SpdSolver, PreconditionedSolveOfSeveralColumnsAtOnce) {
+  const Eigen::SparseMatrix<double> A = shiftedGridLaplacian(30, 1.0), B = shiftedGridLaplacian(30, 0.5);
+  const int n = static_cast<int>(A.rows());
+  Eigen::MatrixXd expected(n, 3);
+  expected.col(0) = randomVector(n, 4);
+  expected.col(1) = randomVector(n, 5);
+  expected.col(2).setZero();
+  const Eigen::MatrixXd rhs = B * expected;
+  for (SpdBackend backend : backends()) {
+    SpdSolver spd(backend);
+    Eigen::MatrixXd x;
+    EXPECT_EQ(spd.solvePreconditioned(B, rhs, x, 1e-10, 50), -1) << "no factorisation yet";
+    ASSERT_TRUE(spd.factorize(A));
+    const int iterations = spd.solvePreconditioned(B, rhs, x, 1e-10, 50);
+    EXPECT_GE(iterations, 1);
+    EXPECT_LE(iterations, 13) << spd.backendName();  // as one column alone (the test above)
+    EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-8) << spd.backendName();
+    EXPECT_EQ(x.col(2).lpNorm<Eigen::Infinity>(), 0);
+    EXPECT_EQ(spd.solvePreconditioned(B, rhs, x, 1e-10, 1), -1) << "too few iterations";
+    // The direct multi-column solve with B's own factorisation.
+    ASSERT_TRUE(spd.factorize(B));
+    spd.solve(rhs, x);
+    EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-12) << spd.backendName();
+  }
+}
+
+// A matrix barely off its diagonal (a fairing amount's M + τ/2 C M⁻¹ C at a small τ) has Cholesky
+// fill that decays into subnormal numbers, which the solver flushes to zero for speed: the
+// solution is still exact to rounding (|x*| ≤ 1, the matrix is within 1e-6 of the identity).
+TEST(SpdSolver, SolvesANearlyDiagonalSystemToRounding) {
+  Eigen::SparseMatrix<double> A = shiftedGridLaplacian(60, 1e6);
+  A /= 1e6;
+  const Eigen::VectorXd expected = randomVector(static_cast<int>(A.rows()), 6);
+  const Eigen::VectorXd b = A * expected;
+  for (SpdBackend backend : backends()) {
+    SpdSolver spd(backend);
+    ASSERT_TRUE(spd.factorize(A));
+    Eigen::VectorXd x;
+    spd.solve(b, x);
+    EXPECT_LT((x - expected).lpNorm<Eigen::Infinity>(), 1e-14) << spd.backendName();
+  }
+}

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <vector>
 
@@ -121,4 +122,37 @@ TEST(Subdivision, RegionOfEveryFaceIsTheWholeSubdivision) {
   EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), region.faceCount());
   std::vector<std::uint8_t> wrong(3, 1);
   EXPECT_THROW(subdivideMidpointRegion(region, wrong), InvalidInputError);
+}
+
+// Loop's masks on the octahedron (every vertex of valence 4, so β = 3/32): an old vertex v goes to
+// (1 − 4β) v + β Σ ring = 5/8 v (its ring sums to 0), an edge vertex to 3/8 (a + b) + 1/8 (c + d)
+// = 3/8 (a + b) (its two opposite corners are antipodal). The faces are the midpoint scheme's.
+TEST(Subdivision, LoopMasksOnTheOctahedron) {
+  TriMesh m;
+  m.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  m.faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  const TriMesh before = m;
+  TriMesh midpoint = m;
+  subdivideMidpoint(midpoint);
+  subdivideLoop(m);
+  ASSERT_EQ(m.vertexCount(), 6 + 12);
+  ASSERT_EQ(m.faceCount(), 32);
+  for (int v = 0; v < 6; ++v) EXPECT_LT((m.positions[v] - 0.625 * before.positions[v]).norm(), 1e-15) << v;
+  for (int v = 6; v < m.vertexCount(); ++v) {
+    EXPECT_NEAR(m.positions[v].norm(), 0.375 * std::sqrt(2.0), 1e-15) << v;  // 3/8 |a + b|, a ⟂ b
+    EXPECT_NEAR(m.positions[v].cwiseAbs().sum(), 0.75, 1e-15) << v;          // two coordinates ±3/8
+  }
+  // The same connectivity as the midpoint scheme: each face's corners, by position class.
+  const Topology t(m.vertexCount(), m.faces);
+  EXPECT_EQ(t.eulerCharacteristic(), 2);
+  EXPECT_EQ(t.boundaryEdgeCount(), 0);
+  for (int f = 0; f < m.faceCount(); ++f)
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(m.faces[f][k] < 6, midpoint.faces[f][k] < 6) << f;
+}
+
+TEST(Subdivision, LoopRefusesAMeshWithABorder) {
+  TriMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.faces = {{0, 1, 2}};
+  EXPECT_THROW(subdivideLoop(m), InvalidInputError);
 }

@@ -11,6 +11,7 @@ nlohmann::json toJson(const FlowReport& r) {
   j["rejected_steps"] = r.rejectedSteps;
   j["mesh_quality"] = {{"pre_subdivisions", r.preSubdivisions},
                        {"remeshings", r.remeshings},
+                       {"coarse_start_levels", r.coarseStartLevels},
                        {"untangle_passes", r.untanglePasses},
                        {"crossing_rejections", r.crossingRejections},
                        {"input_self_intersects", r.inputSelfIntersects}};

@@ -162,6 +162,9 @@ struct FlowReport {
   /// FlowOptions::remesh: subdivisions made before the first flow (the working-resolution floor),
   /// isotropic remeshings of the moving region, and steps rejected because faces would cross.
   int preSubdivisions = 0, remeshings = 0;
+  /// Subdivision levels of a coarse start: a large closed mesh remeshed at 2^k its edge length,
+  /// flowed there, and subdivided back (0: it flowed at its own resolution).
+  int coarseStartLevels = 0;
   /// Tangential relaxation passes that untangled a jittered moving region before the vector
   /// scheme's flow (0: the region was not tangled, or a remeshing resampled it).
   int untanglePasses = 0;

@@ -24,4 +24,11 @@ void subdivideMidpoint(TriMesh& mesh, std::vector<std::uint8_t>* faceFlags = nul
 /// With every face flagged the result is subdivideMidpoint's, faces in another order.
 void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags);
 
+/// Loop subdivision of a closed mesh (Loop 1987, with Warren's weights β = 3/(8n), 3/16 at valence
+/// 3): the same 1-to-4 faces as subdivideMidpoint (old vertices keep their indices, edge vertices
+/// are appended), but every vertex moves to the scheme's smoothing mask, so a smooth coarse
+/// surface stays smooth instead of keeping its facets as creases. Throws InvalidInputError on a
+/// mesh with a border.
+void subdivideLoop(TriMesh& mesh);
+
 }  // namespace elastica

@@ -1,5 +1,6 @@
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
+#include <elastica/subdivision.h>
 #include "flow/fair_masked.h"
 #include "flow/explicit_integrator.h"
 #include "flow/flow_state.h"
@@ -307,7 +308,7 @@ double largestCurvatureTimesEdge(FlowState& state) {
 // kStuckFactor of the stage's largest accepted step for other refusals (a mesh distorted by a
 // large change of shape). The caller remeshes and flows again; report.stop says Stalled.
 bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeTolerance, bool guardEmbedding,
-                 double& lastTau, TriMesh& best, double& bestEnergy, bool& neckFormed) {
+                 bool startAtShapeScale, double& lastTau, TriMesh& best, double& bestEnergy, bool& neckFormed) {
   neckFormed = false;
   constexpr double kGrowVector = 2, kStuckFactor = 1e-4;
   VectorIntegrator integrator;
@@ -319,6 +320,8 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
   const double area0 = state.activeArea();
   const double shapeTime = area0 * area0 / kShapeScaleFactor;
   double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
+  // The shape came converged from the coarser level: only the subdivision's creases are new.
+  if (startAtShapeScale) tau = std::max(tau, shapeTime);
   double ceiling = std::numeric_limits<double>::infinity();
   int settled = 0;
   double largestTau = 0;
@@ -540,8 +543,21 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   double bestEnergy = 0;
   // A fairing amount (FlowOptions::featureSize) keeps the user's vertices: an isotropic remeshing
   // first would resample the surface and smooth it below its edge length, whatever the amount.
-  if (quality && !run.timeLimited() && remeshMovingRegion(mesh, selection, opt.boundary, false)) ++report.remeshings;
-  else if (opt.scheme == Scheme::Vector) untangleMovingRegion(mesh, selection, opt.boundary, false, report);
+  // A large closed mesh starts coarse (coarseStartLevels): its levels are added to the schedule's.
+  // A coarse remeshing that would make faces cross is undone; the mesh is remeshed at its own size.
+  int coarseLevels =
+      quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStartLevels(mesh, selection) : 0;
+  if (coarseLevels > 0 && !remeshMovingRegion(mesh, selection, opt.boundary, false, std::ldexp(1.0, coarseLevels)))
+    coarseLevels = 0;
+  if (coarseLevels > 0) {
+    ++report.remeshings;
+    opt.subdivisionLevels += coarseLevels;
+    report.coarseStartLevels = coarseLevels;
+  } else if (quality && !run.timeLimited() && remeshMovingRegion(mesh, selection, opt.boundary, false)) {
+    ++report.remeshings;
+  } else if (opt.scheme == Scheme::Vector) {
+    untangleMovingRegion(mesh, selection, opt.boundary, false, report);
+  }
   for (;; ++level) {
     if (adaptive && remeshMovingRegion(mesh, selection, opt.boundary, true)) ++report.remeshings;
     adaptive = false;
@@ -562,7 +578,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
       } else if (opt.scheme == Scheme::Vector) {
         bool neckFormed = false;
         meshBound = !vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
-                                 quality && !report.inputSelfIntersects, lastTau, best, bestEnergy, neckFormed);
+                                 quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && reflows == 0,
+                                 lastTau, best, bestEnergy, neckFormed);
         // The stage's output is its lowest-energy state (before any neck formed).
         if (neckFormed || bestEnergy < state.energy())
           state = FlowState(best, selection, stageOpt, internal, slider.get());
@@ -608,7 +625,10 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     if (!refineLater) break;
     reflows = 0;
     report.stop = StopReason::Converged;  // the next stage decides
-    subdivideOneLevel(mesh, selection);
+    // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
+    // midpoints' facets would be creases for the finer level to flow out (MEASURED below).
+    if (coarseLevels > 0) subdivideLoop(mesh);
+    else subdivideOneLevel(mesh, selection);
   }
   // The final approach with the connectivity kept: the vector scheme's converged state is the
   // minimiser of W on this triangulation, whose tangential freedom can trade roundness for energy

@@ -15,6 +15,8 @@
 namespace elastica {
 namespace {
 
+// coarseStartLevels(): the coarse start's level has at least this many vertices. MEASURED below.
+constexpr long long kCoarseStartVertices = 10000;
 // workingResolutionFloor(): free vertices per handle, and without handles (see the header).
 constexpr int kFloorVerticesPerHandle = 1000, kFloorVertices = 100;
 
@@ -45,6 +47,15 @@ int closedGenus(const TriMesh& mesh) {
   int used = 0;
   for (int v = 0; v < topo.vertexCount(); ++v) used += !topo.isIsolatedVertex(v);
   return std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
+}
+
+int coarseStartLevels(const TriMesh& mesh, const std::vector<std::uint8_t>& selection) {
+  if (std::find(selection.begin(), selection.end(), 0) != selection.end()) return 0;
+  const Topology topo(mesh.vertexCount(), mesh.faces);
+  if (topo.boundaryEdgeCount() > 0) return 0;
+  int levels = 0;
+  for (long long n = mesh.vertexCount(); n >= 4LL * kCoarseStartVertices; n /= 4) ++levels;
+  return levels;
 }
 
 int workingResolutionFloor(const TriMesh& mesh) { return kFloorVertices + kFloorVerticesPerHandle * closedGenus(mesh); }
@@ -112,7 +123,7 @@ std::vector<double> largestPrincipalCurvature(const TriMesh& mesh) {
 }
 
 bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, BoundaryMode mode,
-                        bool curvatureAdaptive) {
+                        bool curvatureAdaptive, double coarsening) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
   const VertexRoles roles = assignRoles(topo, &selection, mode);
   std::vector<std::uint8_t> region = movingFaces(mesh, roles);
@@ -126,7 +137,7 @@ bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, Bou
   // An equilateral triangle of the median face area (the mean would follow a refined neck down)
   // has edge sqrt(4A / √3).
   std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
-  const double target = std::sqrt(4 * areas[areas.size() / 2] / std::sqrt(3.0));
+  const double target = coarsening * std::sqrt(4 * areas[areas.size() / 2] / std::sqrt(3.0));
   if (!(target > 0)) return false;
   // Edges three orders of magnitude longer than the region's typical one are not a surface to
   // remesh but a vertex thrown far away (fuzzing found one that made the remesher split for

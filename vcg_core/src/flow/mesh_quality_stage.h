@@ -75,8 +75,16 @@ double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<st
 /// move, and every face touching one, keep their positions and values bit for bit; vertices are
 /// renumbered only where movable ones were removed. `selection` (one byte per face, or empty for
 /// the whole mesh) follows the faces. The remeshing is undone, and false returned, if it would
-/// make faces cross that did not cross before (mesh/self_intersection.h).
+/// make faces cross that did not cross before (mesh/self_intersection.h). `coarsening` multiplies
+/// the target edge length (a coarse start, coarseStartLevels: 2^k for k levels).
 bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, BoundaryMode mode,
-                        bool curvatureAdaptive);
+                        bool curvatureAdaptive, double coarsening = 1);
+
+/// Levels k of a coarse start for the whole-mesh fair of a large closed mesh: remeshed at 2^k times
+/// its edge length (a 4^k-th of its vertices, no fewer than kCoarseStartVertices) and flowed there,
+/// then subdivided k times back to its resolution, so that the many steps a shape change takes run
+/// on the small mesh and the full-size one flows only the last few. 0 for a mesh with a border, a
+/// selection, or fewer than 4 × kCoarseStartVertices vertices.
+int coarseStartLevels(const TriMesh& mesh, const std::vector<std::uint8_t>& selection);
 
 }  // namespace elastica

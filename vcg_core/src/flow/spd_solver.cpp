@@ -2,12 +2,17 @@
 
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 #ifdef ELASTICA_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
 #ifdef _OPENMP
 #include <omp.h>
+#endif
+#if defined(__SSE__)
+#include <xmmintrin.h>
 #endif
 
 
@@ -27,6 +32,23 @@ class OneThreadForCholmod {
 
  private:
   int levels_;
+#endif
+};
+
+// A matrix close to its diagonal (M + τ/2 · C M⁻¹ C at a small τ: a fairing amount's filter)
+// has Cholesky fill entries that decay geometrically with the distance in the mesh, down into
+// subnormal numbers, on which the CPU's arithmetic is about a hundred times slower. Subnormal
+// results are flushed to zero (and subnormal inputs read as zero) while this is alive; no value
+// that matters to a solve is below 1e-308. The previous setting is put back after.
+class FlushSubnormals {
+ public:
+#if defined(__SSE__)
+  FlushSubnormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | kFlushToZero | kDenormalsAreZero); }
+  ~FlushSubnormals() { _mm_setcsr(saved_); }
+
+ private:
+  static constexpr unsigned kFlushToZero = 0x8000, kDenormalsAreZero = 0x0040;
+  unsigned saved_;
 #endif
 };
 
@@ -77,6 +99,7 @@ void SpdSolver::analyzePattern(const Eigen::SparseMatrix<double>& A) {
 
 bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   if (!impl_->simplicial && !impl_->supernodal) analyzePattern(A);
+  [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
   if (impl_->supernodal) {
     [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
     impl_->supernodal->factorize(A);
@@ -88,12 +111,68 @@ bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
 }
 
 void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+  [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
   if (impl_->supernodal) {
     [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
     x = impl_->supernodal->solve(b);
     return;
   }
   x = impl_->simplicial->solve(b);
+}
+
+void SpdSolver::solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
+  [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
+  if (impl_->supernodal) {
+    [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
+    X = impl_->supernodal->solve(B);
+    return;
+  }
+  X = impl_->simplicial->solve(B);
+}
+
+int SpdSolver::solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                                   double tolerance, int maxIterations) const {
+  if (!factored_ || A.rows() != B.rows()) return -1;
+  const Eigen::Index columns = B.cols();
+  X.setZero(B.rows(), columns);
+  Eigen::MatrixXd R = B, Z, P, AP;
+  solve(R, Z);
+  Eigen::VectorXd start(columns), rz(columns);
+  std::vector<bool> done(columns, false);
+  for (Eigen::Index c = 0; c < columns; ++c) {
+    start[c] = rz[c] = R.col(c).dot(Z.col(c));
+    if (!(start[c] > 0)) {
+      if (start[c] != 0) return -1;
+      done[c] = true;  // b = 0: x = 0 solves it
+    }
+  }
+  P = Z;
+  for (int k = 1; k <= maxIterations; ++k) {
+    if (std::all_of(done.begin(), done.end(), [](bool d) { return d; })) return k - 1;
+    AP.noalias() = A.selfadjointView<Eigen::Lower>() * P;
+    for (Eigen::Index c = 0; c < columns; ++c) {
+      if (done[c]) continue;
+      const double curvature = P.col(c).dot(AP.col(c));
+      if (!(curvature > 0)) return -1;
+      const double alpha = rz[c] / curvature;
+      X.col(c) += alpha * P.col(c);
+      R.col(c) -= alpha * AP.col(c);
+    }
+    solve(R, Z);
+    for (Eigen::Index c = 0; c < columns; ++c) {
+      if (done[c]) continue;
+      const double next = R.col(c).dot(Z.col(c));
+      if (!std::isfinite(next)) return -1;
+      if (next <= tolerance * tolerance * start[c]) {
+        done[c] = true;
+        P.col(c).setZero();  // A·0 = 0: the finished column costs the product nothing but zeros
+        continue;
+      }
+      P.col(c) = Z.col(c) + (next / rz[c]) * P.col(c);
+      rz[c] = next;
+    }
+  }
+  return std::all_of(done.begin(), done.end(), [](bool d) { return d; }) ? maxIterations : -1;
 }
 
 int SpdSolver::solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,

@@ -53,6 +53,14 @@ class SpdSolver {
   /// tolerance or A showed a direction of non-positive curvature (x is then not to be used).
   int solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                           double tolerance, int maxIterations) const;
+  /// Solves A X = B for the columns of B with the last successful factorisation (one pass over the
+  /// factor for all of them).
+  void solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const;
+  /// solvePreconditioned for every column of B at once (one multi-column solve per iteration; a
+  /// column stops once it meets the tolerance). Returns the iterations the slowest column took, or
+  /// −1 as above if any column did not converge.
+  int solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                          double tolerance, int maxIterations) const;
   /// Whether a factorisation is held (what solve() and solvePreconditioned() use).
   bool factored() const { return factored_; }
 

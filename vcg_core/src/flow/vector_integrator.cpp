@@ -36,6 +36,16 @@ constexpr int kMaxCulprits = 16, kMaxHoldRounds = 3;
 // Faces about to cross hold their corners (and rings) too; a contact zone spans more vertices than
 // a turned face does.
 constexpr int kMaxContactCulprits = 4 * kMaxCulprits;
+// Large systems are solved by conjugate gradients preconditioned with an earlier step's
+// factorisation while that takes few iterations (as the semi-implicit scheme does, there from 500
+// rows): a step's matrix differs from the last one by its τ (×2 or ×0.5) and the geometry's small
+// change. A solve that needed more than kRefactorAfter iterations, or did not converge within
+// kMaxIterations, makes the next step (or this one) factorise afresh. Below kPreconditionFromRows
+// rows every step has its own factorisation: there it costs little, and meshes of that size flow
+// as they did before this reuse (byte for byte). MEASURED below.
+constexpr double kPcgTolerance = 1e-4;  // of the preconditioned residual, relative to its start
+constexpr int kRefactorAfter = 8, kMaxIterations = 20;
+constexpr int kPreconditionFromRows = 20000;
 // An accepted step is carried on along its direction to at most this many times its length while
 // W keeps falling (VectorIntegrator::tryStep).
 constexpr double kMaxExtrapolation = 8;
@@ -45,7 +55,7 @@ constexpr double kMaxExtrapolation = 8;
 struct VectorIntegrator::SparseSolver {
   SemiImplicitSystem system;
   SpdSolver spd;
-  bool analysed = false;
+  bool analysed = false, refactorNext = false;
 };
 
 void VectorIntegrator::buildRows(const FlowState& state) {
@@ -62,21 +72,32 @@ void VectorIntegrator::buildRows(const FlowState& state) {
 bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
   SparseSolver& s = *solver_;
   const Eigen::SparseMatrix<double>& K = s.system.matrix();
-  if (!s.analysed) {
-    s.spd.analyzePattern(K);
-    s.analysed = true;
-  }
-  if (!s.spd.factorize(K)) return false;
   const int n = static_cast<int>(K.rows());
-  Eigen::VectorXd b(n), x(n);
-  delta_.assign(freeIndex_.size(), Vec3::Zero());
-  for (int c = 0; c < 3; ++c) {
-    for (std::size_t v = 0; v < freeIndex_.size(); ++v)
-      if (freeIndex_[v] >= 0) b[freeIndex_[v]] = -0.25 * tau * gradient[v][c];
-    s.spd.solve(b, x);
-    for (std::size_t v = 0; v < freeIndex_.size(); ++v)
-      if (freeIndex_[v] >= 0) delta_[v][c] = x[freeIndex_[v]];
+  Eigen::MatrixXd b(n, 3), x;
+  for (std::size_t v = 0; v < freeIndex_.size(); ++v)
+    if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = -0.25 * tau * gradient[v].transpose();
+  // Every iterate of conjugate gradients from 0 on an SPD matrix is a descent direction
+  // (bᵀx_k ≥ ½ x_kᵀK x_k > 0), so an inexact δ is still a step the acceptance tests can judge.
+  bool solved = false;
+  if (!s.refactorNext && n >= kPreconditionFromRows && s.spd.factored()) {
+    const int iterations = s.spd.solvePreconditioned(K, b, x, kPcgTolerance, kMaxIterations);
+    if (iterations >= 0) {
+      s.refactorNext = iterations > kRefactorAfter;
+      solved = true;
+    }
   }
+  if (!solved) {
+    if (!s.analysed) {
+      s.spd.analyzePattern(K);
+      s.analysed = true;
+    }
+    if (!s.spd.factorize(K)) return false;
+    s.spd.solve(b, x);
+    s.refactorNext = false;
+  }
+  delta_.assign(freeIndex_.size(), Vec3::Zero());
+  for (std::size_t v = 0; v < freeIndex_.size(); ++v)
+    if (freeIndex_[v] >= 0) delta_[v] = x.row(freeIndex_[v]).transpose();
   return true;
 }
 

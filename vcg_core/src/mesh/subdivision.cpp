@@ -1,5 +1,6 @@
 #include <elastica/errors.h>
 #include <elastica/subdivision.h>
+#include <elastica/topology.h>
 
 #include <algorithm>
 #include <string>
@@ -104,6 +105,51 @@ void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags
       }
     }
   }
+}
+
+void subdivideLoop(TriMesh& mesh) {
+  const int nv = mesh.vertexCount();
+  const Topology topo(nv, mesh.faces);
+  if (topo.boundaryEdgeCount() > 0)
+    throw InvalidInputError("subdivideLoop: the mesh has " + std::to_string(topo.boundaryEdgeCount()) +
+                            " border edges (Loop's masks here are for closed meshes)");
+  const std::vector<Vec3>& p = mesh.positions;
+  std::vector<Vec3> next(static_cast<std::size_t>(nv) + topo.edgeCount());
+  for (int v = 0; v < nv; ++v) {
+    const int n = topo.valence(v);
+    if (n == 0) {
+      next[v] = p[v];
+      continue;
+    }
+    const double beta = n == 3 ? 3.0 / 16 : 3.0 / (8.0 * n);
+    Vec3 ring = Vec3::Zero();
+    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ring += p[topo.ringVertex(k)];
+    next[v] = (1 - n * beta) * p[v] + beta * ring;
+  }
+  const std::vector<Face>& faces = topo.faces();
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    const auto& ev = topo.edgeVertices(e);
+    const auto& oc = topo.edgeOppositeCorners(e);
+    const int c = faces[oc[0] / 3][oc[0] % 3], d = faces[oc[1] / 3][oc[1] % 3];
+    next[nv + e] = 0.375 * (p[ev[0]] + p[ev[1]]) + 0.125 * (p[c] + p[d]);
+  }
+  // The edge between a and b: from a's ring.
+  auto edgeVertex = [&](int a, int b) {
+    for (int k = topo.ringBegin(a); k < topo.ringEnd(a); ++k)
+      if (topo.ringVertex(k) == b) return nv + topo.ringEdge(k);
+    return -1;  // unreachable: every side of a face is an edge
+  };
+  std::vector<Face> children;
+  children.reserve(4 * faces.size());
+  for (const Face& t : faces) {
+    const int a = edgeVertex(t[0], t[1]), b = edgeVertex(t[1], t[2]), c = edgeVertex(t[2], t[0]);
+    children.push_back({t[0], a, c});
+    children.push_back({t[1], b, a});
+    children.push_back({t[2], c, b});
+    children.push_back({a, b, c});
+  }
+  mesh.positions = std::move(next);
+  mesh.faces = std::move(children);
 }
 
 }  // namespace elastica
