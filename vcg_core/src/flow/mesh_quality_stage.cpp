@@ -57,8 +57,22 @@ int coarseStartLevels(const TriMesh& mesh, const std::vector<std::uint8_t>& sele
   if (std::find(selection.begin(), selection.end(), 0) != selection.end()) return 0;
   const Topology topo(mesh.vertexCount(), mesh.faces);
   if (topo.boundaryEdgeCount() > 0) return 0;
+  // The vertices the isotropic remeshing would give at its own size (remeshMovingRegion: faces
+  // of the median area, two faces a vertex), not the input's: a scan of big and small triangles
+  // has many more (the bull, midpoint-subdivided twice to 99,000 vertices: about 250,000).
+  std::vector<double> areas(mesh.faces.size());
+  double total = 0;
+  for (std::size_t f = 0; f < areas.size(); ++f) {
+    const Face& t = mesh.faces[f];
+    areas[f] = 0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
+    total += areas[f];
+  }
+  if (areas.empty()) return 0;
+  std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
+  const double median = areas[areas.size() / 2];
+  if (!(median > 0) || !std::isfinite(total)) return 0;
   int levels = 0;
-  for (long long n = mesh.vertexCount(); n >= 4LL * kCoarseStartVertices; n /= 4) ++levels;
+  for (double n = 0.5 * total / median; n >= 4.0 * kCoarseStartVertices; n /= 4) ++levels;
   return levels;
 }
 
