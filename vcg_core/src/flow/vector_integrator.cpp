@@ -41,8 +41,7 @@ constexpr int kMaxContactCulprits = 4 * kMaxCulprits;
 // rows): a step's matrix differs from the last one by its τ (×2 or ×0.5) and the geometry's small
 // change. A solve that needed more than kRefactorAfter iterations, or did not converge within
 // kMaxIterations, makes the next step (or this one) factorise afresh. Below kPreconditionFromRows
-// rows every step has its own factorisation: there it costs little, and meshes of that size flow
-// as they did before this reuse (byte for byte). On the 163,842-vertex noisy icosphere's full-size
+// rows every step has its own factorisation, as before this reuse: there it costs little. On the 163,842-vertex noisy icosphere's full-size
 // stage (143,634 vertices, coarse start) the second and third steps took 2 iterations each, 0.28 s,
 // where the first step's factorisation took 1.2 s after a 1.5 s analysis (one quiet run).
 constexpr double kPcgTolerance = 1e-4;  // of the preconditioned residual, relative to its start
