@@ -269,7 +269,12 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   auto flowStage = [&](const char* name, auto prepare, std::optional<double> energyFrom = std::nullopt) {
     const auto began = std::chrono::steady_clock::now();
     prepare();
-    improvePatchAngles(sub, patchFace, sigma, firstNew);
+    // Only a patch below the target: moving the vertices of one that reaches it already (toward a
+    // 35° margin, within their tangent planes) changes the surface the flow starts from, and the
+    // flow, which moves vertices along their normals, ends elsewhere (the armadillo's 20-edge hole:
+    // 0.052 % from the removed surface with the pass, 0.048 % without, CGAL's 0.047 %; same 27.1°).
+    // What the flow lowers below the target, the pass after it raises.
+    if (smallestAngleDegrees(sub, patchFace) < kTargetAngleDegrees) improvePatchAngles(sub, patchFace, sigma, firstNew);
     std::string why;
     long long steps = 0;
     try {
