@@ -262,11 +262,12 @@ class PatchAngles {
     // inside the patch: a tangential move leaves the surface by its square times the curvature.
     constexpr int kMaxProbes = 64;  // bounds a slow creep (each move gains at least kGain)
     int probes = 0;
-    // An apex of two border edges that meet at a corner searches in the plane of those two
-    // edges, where cornerBound (hole_boundary.h) finds the corner's best split: in its own tangent
-    // plane the armadillo's 794-edge hole's apex at a 39.2° corner (border edges of 0.10 and 0.39)
-    // stopped at 18.248°, under the bound's 18.260°; in the corner's plane it reaches 18.95°. Its
-    // two faces lie across that corner, nearly in its plane, so the move stays as small.
+    // An apex of two border edges that meet at a corner steps along the plane of those two edges
+    // (directions parallel to it), where cornerBound (hole_boundary.h) finds the corner's best
+    // split, instead of along its own tangent plane: on the armadillo's 794-edge hole (a 39.2°
+    // corner between border edges of 0.10 and 0.39) the tangent-plane search stopped at 18.248°,
+    // under the bound's 18.260°; this one reaches 18.95° (both faces at the corner balanced). Its
+    // two faces lie across that corner, nearly in its plane, so the steps stay as small.
     Vec3 c1 = e1, c2 = e2;
     if (borderEdges.size() == 2) {
       const auto [a0, b0] = borderEdges[0];
