@@ -76,8 +76,8 @@ static int run(int argc, char** argv) {
   }
   std::printf("fastest: %.1f ms (least cpu %.1f ms)\n", bestMs, bestCpu);
   for (const HoleReport& h : best.holes) {
-    std::printf("hole of %d edges: %.1f ms, %d new vertices, %.1f deg, %lld steps\n", h.borderEdges, 1e3 * h.seconds,
-                h.newVertices, h.minAngleDegrees, h.steps);
+    std::printf("hole of %d edges: %.1f ms, %d new vertices, %.3f deg (the border allows %.3f), %lld steps\n",
+                h.borderEdges, 1e3 * h.seconds, h.newVertices, h.minAngleDegrees, h.borderBoundDegrees, h.steps);
     for (const FillStageReport& s : h.stages)
       std::printf("  %-34s %8.1f ms  %s  %5.1f deg  E %.4f  %lld steps %s\n", s.stage.c_str(), 1e3 * s.seconds,
                   s.kept ? "kept" : "    ", s.minAngleDegrees, s.energy, s.steps, s.why.c_str());

@@ -46,7 +46,8 @@ struct HoleFillOptions {
   FillStage stopAfter = FillStage::Flow;  ///< the last stage of each hole's pipeline; default the flow
   PatchRefinementOptions refinement;      ///< Liepa's refinement of the triangulation
   /// Fair holes with at least this many border edges coarse to fine (border edges; 0: never):
-  /// flowed at half the border's density first, then at its density; default 700.
+  /// flowed at half the border's density first, then at its density along the border and 1/1.3 of
+  /// it inside; default 700.
   int coarseFirstFromEdges = 700;
   /// The flow that fairs each patch (boundary mode ignored, no subdivision); default
   /// defaultFillFlow(): semi-implicit with edge flips, stopping once the patch's shape has settled.
