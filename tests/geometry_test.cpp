@@ -1,5 +1,6 @@
 #include "test_meshes.h"
 
+#include <elastica/errors.h>
 #include <elastica/geometry.h>
 #include <elastica/laplacian.h>
 #include <elastica/shapes.h>
@@ -88,6 +89,31 @@ TEST(Laplacian, MeanCurvatureVectorOfSphere) {
   for (int v = 0; v < m.vertexCount(); ++v) {
     EXPECT_NEAR(lp[v].norm(), 2 / r, 0.005 * 2 / r);
     EXPECT_LT(lp[v].normalized().dot(g.vertexNormal[v]), -0.9999);
+  }
+}
+
+// With vertex flags, the flagged vertices get exactly the values of the whole computation (the
+// faces and edges are all computed alike) and the others zero.
+TEST(Geometry, FlaggedVerticesOnly) {
+  for (const TriMesh& m : testMeshes()) {
+    const Topology t(m.vertexCount(), m.faces);
+    const Geometry all = computeGeometry(t, m.positions);
+    std::vector<std::uint8_t> flags(m.vertexCount(), 0);
+    for (int v = 0; v < m.vertexCount(); v += 3) flags[v] = 1;
+    Geometry some;
+    computeGeometry(t, m.positions, VertexArea::Mixed, some, &flags);
+    EXPECT_EQ(some.meanEdgeLength, all.meanEdgeLength);
+    EXPECT_EQ(some.faceArea, all.faceArea);
+    EXPECT_EQ(some.cornerCot, all.cornerCot);
+    EXPECT_EQ(some.edgeWeight, all.edgeWeight);
+    for (int v = 0; v < m.vertexCount(); ++v) {
+      EXPECT_EQ(some.vertexArea[v], flags[v] ? all.vertexArea[v] : 0.0);
+      EXPECT_EQ(some.angleSum[v], flags[v] ? all.angleSum[v] : 0.0);
+      EXPECT_EQ(some.ringArea[v], flags[v] ? all.ringArea[v] : 0.0);
+      EXPECT_EQ(some.vertexNormal[v], flags[v] ? all.vertexNormal[v] : Vec3(Vec3::Zero()));
+    }
+    flags.pop_back();
+    EXPECT_THROW(computeGeometry(t, m.positions, VertexArea::Mixed, some, &flags), InvalidInputError);
   }
 }
 

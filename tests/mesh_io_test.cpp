@@ -367,3 +367,38 @@ TEST(MeshIo, ReadsIntoAVcglibMeshWithRoomToSpare) {
 }
 
 }  // namespace elastica
+
+namespace elastica {
+
+// Bow-tie vertices are split vertex by vertex, each fan after the first getting a new vertex in
+// the order of its first face; the first non-manifold edge in (lower, higher) order is named, and
+// orientation is checked over all edges before any split.
+TEST(MeshIo, SplitsEveryFanAndNamesTheFirstBadEdge) {
+  ScratchDir dir("fans");
+  // Vertex 0: three fans (faces 0, 1 and 2 each alone); vertex 1: two fans (faces 0 and 3).
+  writeText(dir.file("fans.off"),
+            "OFF\n10 4 0\n0 0 0\n1 0 0\n0 1 0\n-1 0 0\n0 -1 0\n1 1 1\n-1 -1 1\n2 0 0\n2 1 0\n-2 1 0\n"
+            "3 0 1 2\n3 0 3 4\n3 0 5 6\n3 1 7 8\n");
+  const io::MeshFile f = io::readMesh(dir.file("fans.off"));
+  EXPECT_EQ(f.report.nonManifoldVerticesSplit, 2);
+  ASSERT_EQ(f.mesh.vertexCount(), 12);  // vertex 9 (unused) dropped, three copies appended
+  EXPECT_EQ(f.mesh.faces, (std::vector<Face>{{0, 1, 2}, {9, 3, 4}, {10, 5, 6}, {11, 7, 8}}));
+  for (int copy : {9, 10}) EXPECT_EQ(f.mesh.positions[copy], f.mesh.positions[0]);
+  EXPECT_EQ(f.mesh.positions[11], f.mesh.positions[1]);
+
+  // Edges 0-1 and 2-3 each on three faces: the message names 0 and 1.
+  writeText(dir.file("edges.off"), "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+                                   "3 2 3 4\n3 3 2 5\n3 2 3 6\n3 0 1 4\n3 1 0 5\n3 0 1 7\n");
+  EXPECT_NE(errorOf(dir.file("edges.off")).find("non-manifold edge between vertices 0 and 1 (shared by 3 faces)"),
+            std::string::npos)
+      << errorOf(dir.file("edges.off"));
+  // A bow-tie and a flipped face: orientation is refused (first bad edge 1-2), nothing is split.
+  writeText(dir.file("flip.off"), "OFF\n6 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n-1 0 0\n0 -1 0\n"
+                                  "3 0 1 2\n3 1 2 3\n3 0 4 5\n");
+  EXPECT_NE(errorOf(dir.file("flip.off")).find("1 edge traversed the same way by both faces, the first between "
+                                               "vertices 1 and 2"),
+            std::string::npos)
+      << errorOf(dir.file("flip.off"));
+}
+
+}  // namespace elastica

@@ -95,3 +95,59 @@ TEST(Topology, IsolatedVertex) {
   EXPECT_TRUE(t.isIsolatedVertex(3));
   EXPECT_FALSE(t.isIsolatedVertex(0));
 }
+
+// rebuild() reuses the storage of an earlier topology, larger or smaller, and gives what a fresh
+// one gives; a throw leaves it empty.
+TEST(Topology, RebuildEqualsAFreshTopology) {
+  const std::vector<TriMesh> meshes = {shapes::icosphere(1.0, 3), shapes::grid(7, 4), shapes::torus(3, 1, 24, 12),
+                                       shapes::icosphere(1.0, 1)};
+  Topology t;
+  EXPECT_EQ(t.vertexCount(), 0);
+  EXPECT_EQ(t.edgeCount(), 0);
+  for (const TriMesh& m : meshes) {
+    t.rebuild(m.vertexCount(), m.faces);
+    const Topology fresh(m.vertexCount(), m.faces);
+    ASSERT_EQ(t.edgeCount(), fresh.edgeCount());
+    EXPECT_EQ(t.faces(), fresh.faces());
+    EXPECT_EQ(t.boundaryEdgeCount(), fresh.boundaryEdgeCount());
+    EXPECT_EQ(t.inconsistentEdgeCount(), fresh.inconsistentEdgeCount());
+    EXPECT_EQ(t.byteSize(), fresh.byteSize());
+    for (int e = 0; e < t.edgeCount(); ++e) {
+      EXPECT_EQ(t.edgeVertices(e), fresh.edgeVertices(e));
+      EXPECT_EQ(t.edgeOppositeCorners(e), fresh.edgeOppositeCorners(e));
+    }
+    for (int v = 0; v < t.vertexCount(); ++v) {
+      ASSERT_EQ(t.ringBegin(v), fresh.ringBegin(v));
+      ASSERT_EQ(t.ringEnd(v), fresh.ringEnd(v));
+      for (int k = t.ringBegin(v); k < t.ringEnd(v); ++k) {
+        EXPECT_EQ(t.ringVertex(k), fresh.ringVertex(k));
+        EXPECT_EQ(t.ringEdge(k), fresh.ringEdge(k));
+      }
+      ASSERT_EQ(t.cornerBegin(v), fresh.cornerBegin(v));
+      ASSERT_EQ(t.cornerEnd(v), fresh.cornerEnd(v));
+      for (int k = t.cornerBegin(v); k < t.cornerEnd(v); ++k) EXPECT_EQ(t.corner(k), fresh.corner(k));
+      EXPECT_EQ(t.isBoundaryVertex(v), fresh.isBoundaryVertex(v));
+    }
+  }
+  EXPECT_THROW(t.rebuild(5, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}), InvalidInputError);
+  EXPECT_EQ(t.vertexCount(), 0);
+  EXPECT_EQ(t.faceCount(), 0);
+  EXPECT_EQ(t.edgeCount(), 0);
+}
+
+// Vertices of very high valence take the general sort (more than 32 spokes): a fan of 40 faces
+// around vertex 0 lists its edges and ring in increasing order, each edge's corners in face order.
+TEST(Topology, HighValenceVertex) {
+  const int n = 40;
+  std::vector<Face> faces;
+  for (int i = 0; i < n; ++i) faces.push_back({0, 1 + i, 1 + (i + 1) % n});
+  const Topology t(n + 1, faces);
+  EXPECT_EQ(t.valence(0), n);
+  EXPECT_EQ(t.boundaryEdgeCount(), n);  // the rim
+  for (int k = t.ringBegin(0) + 1; k < t.ringEnd(0); ++k) EXPECT_LT(t.ringVertex(k - 1), t.ringVertex(k));
+  for (int e = 0; e < t.edgeCount(); ++e) {
+    EXPECT_LT(t.edgeVertices(e)[0], t.edgeVertices(e)[1]);
+    if (e > 0) EXPECT_LT(t.edgeVertices(e - 1), t.edgeVertices(e));
+    if (!t.isBoundaryEdge(e)) EXPECT_LT(t.edgeOppositeCorners(e)[0], t.edgeOppositeCorners(e)[1]);
+  }
+}

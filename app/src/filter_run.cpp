@@ -232,7 +232,8 @@ CurvatureResult runCurvature(const TriMesh& mesh, const CurvatureMeasureOptions&
   CurvatureResult r;
   // Above a million vertices, in pieces: at 2.6 M a whole-mesh Topology, Geometry and Curvature
   // took 1,421 MB (meshlabserver reads and writes the file in 483 MB), in pieces 580 MB at 1.27×
-  // the time (farm-bench, paired); below it the whole mesh's caches stay within 2× of MeshLab's
+  // the time (farm-bench, paired, at 2ff5174; the pieces are faster since: docs/benchmarks.md,
+  // I/O); below it the whole mesh's caches stay within 2× of MeshLab's
   // memory (655 k vertices: 361 MB against 198 MB) and the time is kept.
   constexpr int kPiecesAbove = 1 << 20;
   r.curvature = mesh.vertexCount() > kPiecesAbove ? measureCurvatureInPieces(mesh, opt) : measureCurvature(mesh, opt);

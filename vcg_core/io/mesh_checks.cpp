@@ -49,11 +49,13 @@ class FirstOccurrence {
     while (n < 2 * count) n *= 2;
     slots_.assign(n, -1);
   }
-  /// The first element inserted that equals `e`, or -1 after inserting `e`.
-  template <class Hash, class Equal>
-  int findOrInsert(int e, Hash hash, Equal equal) {
+  /// Asks the cache for the slot where a search for hash value `h` starts.
+  void prefetch(std::uint64_t h) const { __builtin_prefetch(&slots_[h & (slots_.size() - 1)]); }
+  /// The first element inserted that equals `e` (of hash value `h`), or -1 after inserting `e`.
+  template <class Equal>
+  int findOrInsert(int e, std::uint64_t h, Equal equal) {
     const size_t mask = slots_.size() - 1;
-    for (size_t i = hash(e) & mask;; i = (i + 1) & mask) {
+    for (size_t i = h & mask;; i = (i + 1) & mask) {
       if (slots_[i] < 0) {
         slots_[i] = e;
         return -1;
@@ -80,91 +82,123 @@ struct VertexCorners {
   }
 };
 
-// The edges from each vertex lo to higher-numbered ones, with the faces on each: runs of equal hi
-// are the faces around one edge (lo, hi), visited in increasing (lo, hi).
-struct EdgeAtLo {
-  int hi, face;
-  bool forward;  // the face runs lo -> hi
-};
+// The faces at vertex v seen from v: one spoke per edge of a face at v, packed in one integer
+// (other end << 32 | face << 1 | the face runs v -> other), so that sorting the integers sorts
+// by (other end, face). (A struct of these fields, built field by field and copied whole, stalled
+// on every copy: the processor cannot forward several small stores into one wide load.)
+using Spoke = std::uint64_t;
+Spoke spoke(int other, int face, bool forward) {
+  return std::uint64_t(other) << 32 | std::uint64_t(face) << 1 | std::uint64_t(forward);
+}
+int spokeOther(Spoke s) { return static_cast<int>(s >> 32); }
+int spokeFace(Spoke s) { return static_cast<int>((s & 0xffffffffu) >> 1); }
+bool spokeForward(Spoke s) { return (s & 1) != 0; }
 
-void checkEdges(const std::string& path, const std::vector<Tri>& faces, const VertexCorners& vc, bool merged) {
+// A vertex has about twelve spokes, where an insertion sort beats a general-purpose one; past the
+// limit (a vertex of very high valence) std::sort.
+void sortSpokes(std::vector<Spoke>& spokes) {
+  if (spokes.size() > 32) {
+    std::sort(spokes.begin(), spokes.end());
+    return;
+  }
+  for (size_t i = 1; i < spokes.size(); ++i) {
+    const Spoke s = spokes[i];
+    size_t j = i;
+    for (; j > 0 && s < spokes[j - 1]; --j) spokes[j] = spokes[j - 1];
+    spokes[j] = s;
+  }
+}
+
+// Splits vertex v, whose faces form several fans (joined across edges at v), into one vertex per
+// fan: the first fan keeps v, the others get new vertices appended to `positions`, in the order
+// of their first corner.
+void splitFans(int v, std::vector<Tri>& faces, const VertexCorners& vc, std::vector<Vec3>& positions) {
+  const int n = vc.offset[v + 1] - vc.offset[v];
+  std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, local corner)
+  std::vector<int> parent(n), copyOf(n, -1);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (int i = 0; i < n; ++i) {
+    const int c = vc.corners[vc.offset[v] + i];
+    spokes.emplace_back(faces[c / 3][(c % 3 + 1) % 3], i);
+    spokes.emplace_back(faces[c / 3][(c % 3 + 2) % 3], i);
+  }
+  std::sort(spokes.begin(), spokes.end());
+  for (size_t i = 1; i < spokes.size(); ++i)
+    if (spokes[i].first == spokes[i - 1].first)
+      parent[findRoot(parent, spokes[i].second)] = findRoot(parent, spokes[i - 1].second);
+  copyOf[findRoot(parent, 0)] = v;  // fan root → vertex index it gets
+  for (int i = 0; i < n; ++i) {
+    const int r = findRoot(parent, i);
+    if (copyOf[r] < 0) {
+      copyOf[r] = static_cast<int>(positions.size());
+      positions.push_back(positions[v]);
+    }
+    const int c = vc.corners[vc.offset[v] + i];
+    faces[c / 3][c % 3] = copyOf[r];
+  }
+}
+
+// One pass over the vertices, each with its spokes sorted once: refuses an edge of more than two
+// faces (the first in (lo, hi) order) and edges traversed the same way by both faces (after all
+// edges), then splits every bow-tie vertex into one vertex per fan (new vertices appended to
+// `positions`, vertex by vertex). Returns how many were split.
+int checkEdgesAndSplitFans(const std::string& path, std::vector<Tri>& faces, const VertexCorners& vc,
+                           std::vector<Vec3>& positions, bool merged) {
   size_t inconsistent = 0;
   int firstLo = -1, firstHi = -1;
-  std::vector<EdgeAtLo> edges;
+  std::vector<Spoke> spokes;
+  std::vector<int> parent, bowTies;
   const int nv = static_cast<int>(vc.offset.size()) - 1;
+  const int nc = static_cast<int>(vc.corners.size());
   for (int lo = 0; lo < nv; ++lo) {
-    edges.clear();
-    for (int i = vc.offset[lo]; i < vc.offset[lo + 1]; ++i) {
-      const int c = vc.corners[i], f = c / 3, k = c % 3;
-      const int next = faces[f][(k + 1) % 3], prev = faces[f][(k + 2) % 3];
-      if (next > lo) edges.push_back({next, f, true});
-      if (prev > lo) edges.push_back({prev, f, false});
+    const int n = vc.offset[lo + 1] - vc.offset[lo];
+    const int* corners = vc.corners.data() + vc.offset[lo];
+    spokes.clear();
+    for (int i = 0; i < n; ++i) {
+      // The faces around a vertex lie anywhere in the face array: each is asked for from the
+      // cache kAhead corners before it is read, so the misses overlap.
+      constexpr int kAhead = 16;
+      if (vc.offset[lo] + i + kAhead < nc) __builtin_prefetch(&faces[corners[i + kAhead] / 3]);
+      const int c = corners[i], f = c / 3, k = c % 3;
+      spokes.push_back(spoke(faces[f][(k + 1) % 3], f, true));
+      spokes.push_back(spoke(faces[f][(k + 2) % 3], f, false));
     }
-    std::sort(edges.begin(), edges.end(),
-              [](const EdgeAtLo& x, const EdgeAtLo& y) { return x.hi != y.hi ? x.hi < y.hi : x.face < y.face; });
-    for (size_t i = 0; i < edges.size();) {
+    sortSpokes(spokes);
+    // The corners of lo are in increasing face order: a face's place among them by bisection.
+    auto place = [&](int f) { return static_cast<int>(std::lower_bound(corners, corners + n, 3 * f) - corners); };
+    parent.resize(n);
+    std::iota(parent.begin(), parent.end(), 0);
+    int fans = n;
+    for (size_t i = 0; i < spokes.size();) {
+      const int hi = spokeOther(spokes[i]);
       size_t j = i + 1;
-      while (j < edges.size() && edges[j].hi == edges[i].hi) ++j;
-      if (j - i > 2)
-        fail(path, "non-manifold edge between vertices " + std::to_string(lo) + " and " + std::to_string(edges[i].hi) +
+      while (j < spokes.size() && spokeOther(spokes[j]) == hi) ++j;
+      if (hi > lo && j - i > 2)
+        fail(path, "non-manifold edge between vertices " + std::to_string(lo) + " and " + std::to_string(hi) +
                        " (shared by " + std::to_string(j - i) + " faces" + (merged ? ", after merging coincident vertices" : "") +
                        "); not repaired automatically: remove the extra faces, e.g. in MeshLab: Filters > Cleaning and "
                        "Repairing > Repair non Manifold Edges");
-      if (j - i == 2 && edges[i].forward == edges[i + 1].forward) {
-        if (firstLo < 0) firstLo = lo, firstHi = edges[i].hi;
+      if (hi > lo && j - i == 2 && spokeForward(spokes[i]) == spokeForward(spokes[i + 1])) {
+        if (firstLo < 0) firstLo = lo, firstHi = hi;
         ++inconsistent;
+      }
+      for (size_t m = i + 1; m < j; ++m) {
+        const int a = findRoot(parent, place(spokeFace(spokes[m]))), b = findRoot(parent, place(spokeFace(spokes[i])));
+        if (a != b) parent[a] = b, --fans;
       }
       i = j;
     }
+    if (fans > 1) bowTies.push_back(lo);
   }
   if (inconsistent > 0)
     fail(path, "faces are not consistently oriented (" + std::to_string(inconsistent) +
                    (inconsistent == 1 ? " edge" : " edges") + " traversed the same way by both faces, the first between vertices " +
                    std::to_string(firstLo) + " and " + std::to_string(firstHi) +
                    "); re-orient them first, e.g. in MeshLab: Filters > Normals > Re-Orient all faces coherently");
-}
-
-// Splits every vertex whose faces form several fans (joined across edges at the vertex) into
-// one vertex per fan; new vertices are appended to `positions`. Returns how many were split.
-int splitBowTies(std::vector<Tri>& faces, const VertexCorners& vc, std::vector<Vec3>& positions) {
-  const int nv = static_cast<int>(positions.size());
-  const std::vector<int>& offset = vc.offset;
-  const std::vector<int>& corners = vc.corners;
-  int split = 0;
-  std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, local corner)
-  std::vector<int> parent, copyOf;
-  for (int v = 0; v < nv; ++v) {
-    const int n = offset[v + 1] - offset[v];
-    if (n < 2) continue;
-    spokes.clear();
-    parent.resize(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    for (int i = 0; i < n; ++i) {
-      const int c = corners[offset[v] + i];
-      spokes.emplace_back(faces[c / 3][(c % 3 + 1) % 3], i);
-      spokes.emplace_back(faces[c / 3][(c % 3 + 2) % 3], i);
-    }
-    std::sort(spokes.begin(), spokes.end());
-    for (size_t i = 1; i < spokes.size(); ++i)
-      if (spokes[i].first == spokes[i - 1].first)
-        parent[findRoot(parent, spokes[i].second)] = findRoot(parent, spokes[i - 1].second);
-    copyOf.assign(n, -1);  // fan root → vertex index it gets
-    const int firstRoot = findRoot(parent, 0);
-    copyOf[firstRoot] = v;
-    bool wasSplit = false;
-    for (int i = 0; i < n; ++i) {
-      const int r = findRoot(parent, i);
-      if (copyOf[r] < 0) {
-        copyOf[r] = static_cast<int>(positions.size());
-        positions.push_back(positions[v]);
-        wasSplit = true;
-      }
-      const int c = corners[offset[v] + i];
-      faces[c / 3][c % 3] = copyOf[r];
-    }
-    split += wasSplit;
-  }
-  return split;
+  // Splitting a vertex renames its corners only; faces joined across an edge at a later vertex
+  // stay joined, so the fans found above are the fans found after the earlier splits.
+  for (int v : bowTies) splitFans(v, faces, vc, positions);
+  return static_cast<int>(bowTies.size());
 }
 
 }  // namespace
@@ -213,9 +247,17 @@ void checkAndRepair(const std::string& path, TriMesh& mesh, std::vector<std::uin
       return h;
     };
     auto equal = [&](int a, int b) { return positions[a] == positions[b]; };
+    // The table is larger than the caches: each vertex's slot is asked for kAhead vertices
+    // before it is searched, so the misses overlap (the hashes wait in a ring).
+    constexpr int kAhead = 16;
+    std::uint64_t ahead[kAhead] = {};
+    for (int v = 0; v < std::min(nv, kAhead); ++v)
+      if (referenced[v]) seen.prefetch(ahead[v] = hash(v));
     for (int v = 0; v < nv; ++v) {
+      const std::uint64_t h = ahead[v % kAhead];
+      if (v + kAhead < nv && referenced[v + kAhead]) seen.prefetch(ahead[(v + kAhead) % kAhead] = hash(v + kAhead));
       if (!referenced[v]) continue;
-      const int first = seen.findOrInsert(v, hash, equal);
+      const int first = seen.findOrInsert(v, h, equal);
       if (first >= 0) rep[v] = first, ++report.duplicateVerticesMerged;
     }
   }
@@ -276,8 +318,8 @@ void checkAndRepair(const std::string& path, TriMesh& mesh, std::vector<std::uin
 
   {
     const VertexCorners corners(faces, nv);
-    checkEdges(path, faces, corners, report.duplicateVerticesMerged > 0);
-    report.nonManifoldVerticesSplit = splitBowTies(faces, corners, positions);
+    report.nonManifoldVerticesSplit =
+        checkEdgesAndSplitFans(path, faces, corners, positions, report.duplicateVerticesMerged > 0);
   }
 
   // Drop vertices no face uses (never referenced, or merged away), keeping the file's order.

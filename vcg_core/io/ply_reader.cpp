@@ -183,6 +183,21 @@ class Body {
   /// The next value of PLY type `type` (`name` its header name, for messages); `where` names it
   /// for the error if the data ends.
   double read(Scalar type, const std::string& name, const Where& where) {
+    // A little-endian file on a little-endian machine, away from the buffer's end: values are
+    // copied as they lie (the general path below assembles them byte by byte).
+    if (kLittleHost && format_ == Format::BinaryLittle && end_ - pos_ >= 8) {
+      const unsigned char* b = buffer_.data() + pos_;
+      switch (type) {
+        case Scalar::Float64: return take<double>(b);
+        case Scalar::Float32: return take<float>(b);
+        case Scalar::Int32: return take<std::int32_t>(b);
+        case Scalar::UInt32: return take<std::uint32_t>(b);
+        case Scalar::Int16: return take<std::int16_t>(b);
+        case Scalar::UInt16: return take<std::uint16_t>(b);
+        case Scalar::Int8: return take<std::int8_t>(b);
+        case Scalar::UInt8: return take<std::uint8_t>(b);
+      }
+    }
     if (format_ == Format::Ascii) return readText(type, name, where);
     const size_t n = static_cast<size_t>(sizeOf(type));
     if (!ensure(n)) fail(path_, "truncated PLY: the file ends in " + where.text());
@@ -212,6 +227,15 @@ class Body {
 
  private:
   static constexpr size_t kChunk = 1 << 20;
+  static constexpr bool kLittleHost = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
+
+  template <class T>
+  double take(const unsigned char* b) {
+    T value;
+    std::memcpy(&value, b, sizeof value);
+    pos_ += sizeof value;
+    return static_cast<double>(value);
+  }
 
   // At least `n` unread bytes in the buffer (n <= 8); false at the end of the file.
   bool ensure(size_t n) {

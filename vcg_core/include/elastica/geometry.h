@@ -6,6 +6,7 @@
 #include <elastica/types.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace elastica {
@@ -58,8 +59,11 @@ struct Geometry {
 };
 
 /// Fills `g` (reusing its storage: no allocation once sized) from positions `p`.
-/// `p.size()` must equal `topo.vertexCount()`.
-void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g);
+/// `p.size()` must equal `topo.vertexCount()`. With `active` (one flag per vertex), the per-vertex
+/// quantities (areas, normals, angle sums) are computed at the flagged vertices only and are zero
+/// elsewhere, and `g.degenerate` counts flagged vertices only; faces and edges are all computed.
+void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g,
+                     const std::vector<std::uint8_t>* active = nullptr);
 
 /// Convenience overload returning a fresh cache.
 Geometry computeGeometry(const Topology& topo, const std::vector<Vec3>& p,

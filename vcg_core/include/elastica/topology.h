@@ -18,6 +18,13 @@ class Topology {
   /// @throws InvalidInputError on an index out of range, a face that repeats a vertex, or an edge
   ///         shared by more than two faces (non-manifold edge). The message names the face/edge.
   Topology(int vertexCount, const std::vector<Face>& faces);
+  /// An empty topology (no vertices, no faces), to rebuild() later.
+  Topology() = default;
+
+  /// Builds the adjacency of `faces` anew, as the constructor does, reusing this object's storage
+  /// (a loop over pieces of a mesh then allocates nothing once the arrays are large enough).
+  /// @throws InvalidInputError as the constructor; the topology is then empty.
+  void rebuild(int vertexCount, const std::vector<Face>& faces);
 
   /// The most vertices of any Topology built in this process since the last reset: tests check
   /// with it that a path works on pieces of a mesh and never builds the whole mesh's.
@@ -67,6 +74,8 @@ class Topology {
   int eulerCharacteristic() const { return nv_ - edgeCount() + faceCount(); }
 
  private:
+  void build(int vertexCount, const std::vector<Face>& faces);
+
   int nv_ = 0;
   std::vector<Face> faces_;
   std::vector<std::array<int, 2>> edgeVertices_;

@@ -62,10 +62,15 @@ double angleSumOf(const Topology& topo, const Geometry& g, int begin, int end) {
 
 double Geometry::cornerAngle(std::size_t c) const { return std::atan2(2 * faceArea[c / 3], cornerDot[c]); }
 
-void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g) {
+void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g,
+                     const std::vector<std::uint8_t>* active) {
   const int nv = topo.vertexCount(), nf = topo.faceCount(), ne = topo.edgeCount();
   if (static_cast<int>(p.size()) != nv) {
     throw InvalidInputError("computeGeometry: " + std::to_string(p.size()) + " positions for a topology of " +
+                            std::to_string(nv) + " vertices");
+  }
+  if (active && static_cast<int>(active->size()) != nv) {
+    throw InvalidInputError("computeGeometry: " + std::to_string(active->size()) + " vertex flags for a topology of " +
                             std::to_string(nv) + " vertices");
   }
   g.areaType = areaType;
@@ -154,6 +159,11 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
     std::size_t zeroArea = 0, isolated = 0;
   };
   const VertexTally vertexTally = parallelReduce(nv, VertexTally{}, [&](int v, VertexTally& tally) {
+    if (active && !(*active)[v]) {
+      g.angleSum[v] = g.ringArea[v] = g.vertexArea[v] = 0;
+      g.vertexNormal[v] = Vec3::Zero();
+      return;
+    }
     double area = 0, ring = 0;
     Vec3 normal = Vec3::Zero();
     for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) {

@@ -47,12 +47,15 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
       used[v] = 1;
     }
   long long edges = 0;
-  std::vector<int> local(nv, -1);  // a piece's vertex number, -1 outside it
+  std::vector<int> local(nv, -1);  // a piece's vertex number (set for the piece's vertices)
+  // A piece's vertices as bits over the mesh's: read in order, they come sorted (no sort).
+  std::vector<std::uint64_t> inPiece((static_cast<std::size_t>(nv) + 63) / 64, 0);
   std::vector<int> global;
   TriMesh piece;
   std::vector<std::uint8_t> own;
-  // One piece's caches, their storage reused by the next: fresh ones per piece were given back to
-  // the system and faulted in again.
+  // One piece's topology and caches, their storage reused by the next: fresh ones per piece were
+  // given back to the system and faulted in again.
+  Topology topo;
   Geometry geo;
   Curvature c;
   std::vector<Vec3> laplacianOfP;
@@ -63,16 +66,23 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
     // order: each own vertex has its whole fan, listed as a whole-mesh Topology lists it.
     piece.faces.clear();
     global.clear();
+    std::size_t lowWord = inPiece.size(), highWord = 0;
+    // One scan of the mesh per piece: gathering every piece's faces in one pass was 3 % faster
+    // on 2.6 M vertices, for 36 MB more at the peak.
     for (const Face& t : mesh.faces) {
       if (!owned(t[0]) && !owned(t[1]) && !owned(t[2])) continue;
       piece.faces.push_back(t);
-      for (int v : t)
-        if (local[v] < 0) {
-          local[v] = 0;
-          global.push_back(v);
-        }
+      for (int v : t) {
+        const std::size_t w = static_cast<std::size_t>(v) >> 6;
+        inPiece[w] |= std::uint64_t{1} << (v & 63);
+        lowWord = std::min(lowWord, w);
+        highWord = std::max(highWord, w);
+      }
     }
-    std::sort(global.begin(), global.end());
+    for (std::size_t w = lowWord; w <= highWord && w < inPiece.size(); ++w)
+      for (std::uint64_t bits = inPiece[w]; bits != 0; bits &= bits - 1)
+        global.push_back(static_cast<int>(64 * w + static_cast<std::size_t>(__builtin_ctzll(bits))));
+    for (std::size_t w = lowWord; w <= highWord && w < inPiece.size(); ++w) inPiece[w] = 0;
     for (std::size_t i = 0; i < global.size(); ++i) local[global[i]] = static_cast<int>(i);
     piece.positions.resize(global.size());
     for (std::size_t i = 0; i < global.size(); ++i) piece.positions[i] = mesh.positions[global[i]];
@@ -81,8 +91,11 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
     own.assign(global.size(), 0);
     for (std::size_t i = 0; i < global.size(); ++i) own[i] = owned(global[i]);
 
-    const Topology topo(piece.vertexCount(), piece.faces);
-    computeGeometry(topo, piece.positions, opt.area, geo);
+    topo.rebuild(piece.vertexCount(), piece.faces);
+    // Only the own vertices' areas, normals and angle sums are read: the others are in the
+    // piece for their positions (on the 2.6 M-vertex icosphere, 786,360 of the first piece's
+    // 917,492 vertices; about 47,000 of 178,000 in the later ones).
+    computeGeometry(topo, piece.positions, opt.area, geo, &own);
     computeCurvature(topo, geo, piece.positions, opt.curvature, c, laplacianOfP);
     out.energy += totalCurvatureEnergy(topo, geo, c, &own);
     for (std::size_t i = 0; i < global.size(); ++i) {
@@ -106,7 +119,6 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
       if (owned(std::min({global[t[0]], global[t[1]], global[t[2]]})))
         out.degenerate.zeroAreaFaces += geo.faceNormal[f].isZero(0);  // a degenerate face's normal
     }
-    for (int v : global) local[v] = -1;
   }
   for (int v = 0; v < nv; ++v) out.degenerate.isolatedVertices += !used[v];
   out.eulerCharacteristic = static_cast<int>(nv - edges + mesh.faceCount());

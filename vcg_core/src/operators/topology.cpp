@@ -3,31 +3,35 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <numeric>
 #include <string>
 
 namespace elastica {
 namespace {
 
-// A half-edge seen from its smaller endpoint.
-struct Spoke {
-  int hi;      // the larger endpoint
-  int corner;  // the corner opposite the edge in its face
-};
+// A half-edge seen from its smaller endpoint, packed in one integer: the larger endpoint << 32 |
+// the corner opposite the edge in its face. (A struct of the two, built field by field and copied
+// whole, stalled on each copy: the processor cannot forward two small stores into one wide load.)
+using Spoke = std::uint64_t;
+Spoke spoke(int hi, int corner) { return std::uint64_t(hi) << 32 | std::uint32_t(corner); }
+int spokeHi(Spoke s) { return static_cast<int>(s >> 32); }
+int spokeCorner(Spoke s) { return static_cast<int>(s & 0xffffffffu); }
 
-// Stable insertion sort by the larger endpoint. A vertex has about six spokes, where this beats
-// any general-purpose sort; past the limit (a vertex of very high valence) it would be quadratic.
+// Sorted by (larger endpoint, corner): a vertex's spokes come in increasing corner order, so this
+// is the stable order by larger endpoint. A vertex has about six spokes, where an insertion sort
+// beats any general-purpose sort; past the limit (a vertex of very high valence) std::sort.
 constexpr std::size_t kInsertionSortLimit = 32;
 
 void sortSpokes(std::vector<Spoke>& spokes) {
   if (spokes.size() > kInsertionSortLimit) {
-    std::stable_sort(spokes.begin(), spokes.end(), [](const Spoke& x, const Spoke& y) { return x.hi < y.hi; });
+    std::sort(spokes.begin(), spokes.end());
     return;
   }
   for (std::size_t i = 1; i < spokes.size(); ++i) {
     const Spoke s = spokes[i];
     std::size_t j = i;
-    for (; j > 0 && spokes[j - 1].hi > s.hi; --j) spokes[j] = spokes[j - 1];
+    for (; j > 0 && spokes[j - 1] > s; --j) spokes[j] = spokes[j - 1];
     spokes[j] = s;
   }
 }
@@ -51,8 +55,24 @@ void Topology::resetLargestBuilt() { largestTopology.store(0); }
 // sort of the edges. It runs at every connectivity change (each edge-flip pass, each hole patch,
 // remeshing), so it also avoids temporaries as large as the mesh: on a virtual machine their page
 // faults cost more than the work.
-Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertexCount), faces_(faces) {
+Topology::Topology(int vertexCount, const std::vector<Face>& faces) { rebuild(vertexCount, faces); }
+
+void Topology::rebuild(int vertexCount, const std::vector<Face>& faces) {
+  try {
+    build(vertexCount, faces);
+  } catch (...) {
+    *this = Topology();
+    throw;
+  }
+}
+
+void Topology::build(int vertexCount, const std::vector<Face>& faces) {
   if (vertexCount < 0) throw InvalidInputError("Topology: negative vertex count");
+  nv_ = vertexCount;
+  faces_ = faces;
+  edgeVertices_.clear();
+  edgeCorners_.clear();
+  boundaryEdges_ = inconsistentEdges_ = 0;
   for (int seen = largestTopology.load(); seen < vertexCount && !largestTopology.compare_exchange_weak(seen, vertexCount);) {
   }
   const int nf = static_cast<int>(faces.size());
@@ -92,30 +112,40 @@ Topology::Topology(int vertexCount, const std::vector<Face>& faces) : nv_(vertex
   for (int lo = 0; lo < nv_; ++lo) {
     spokes.clear();
     for (int i = cornerBegin(lo); i < cornerEnd(lo); ++i) {
+      // The faces around a vertex lie anywhere in the face array: each is asked for from the
+      // cache kAhead corners before it is read, so the misses overlap.
+      constexpr int kAhead = 16;
+      if (i + kAhead < nc) __builtin_prefetch(&faces[vertexCorner_[i + kAhead] / 3]);
       const int c = vertexCorner_[i], f = c / 3, k = c % 3;
       // The edge to the next vertex of the face is opposite the previous corner, and vice versa.
       const int next = faces[f][(k + 1) % 3], prev = faces[f][(k + 2) % 3];
-      if (next > lo) spokes.push_back({next, 3 * f + (k + 2) % 3});
-      if (prev > lo) spokes.push_back({prev, 3 * f + (k + 1) % 3});
+      if (next > lo) spokes.push_back(spoke(next, 3 * f + (k + 2) % 3));
+      if (prev > lo) spokes.push_back(spoke(prev, 3 * f + (k + 1) % 3));
     }
     sortSpokes(spokes);
     for (std::size_t i = 0; i < spokes.size();) {
-      const int hi = spokes[i].hi;
+      const int hi = spokeHi(spokes[i]);
       std::size_t j = i + 1;
-      while (j < spokes.size() && spokes[j].hi == hi) ++j;
+      while (j < spokes.size() && spokeHi(spokes[j]) == hi) ++j;
       if (j - i > 2) {
         throw InvalidInputError("Topology: non-manifold edge between vertices " + std::to_string(lo) + " and " +
                                 std::to_string(hi) + " (shared by " + std::to_string(j - i) + " faces)");
       }
-      edgeVertices_.push_back({lo, hi});
+      // Element by element (not push_back({a, b}), which went through the stack, see Spoke).
+      edgeVertices_.emplace_back();
+      edgeVertices_.back()[0] = lo;
+      edgeVertices_.back()[1] = hi;
+      edgeCorners_.emplace_back();
       if (j - i == 2) {
-        const int c0 = spokes[i].corner, c1 = spokes[i + 1].corner;
-        edgeCorners_.push_back({c0, c1});
+        const int c0 = spokeCorner(spokes[i]), c1 = spokeCorner(spokes[i + 1]);
+        edgeCorners_.back()[0] = c0;
+        edgeCorners_.back()[1] = c1;
         // Each face traverses the edge from the vertex after the opposite corner.
         const bool forward0 = faces[c0 / 3][(c0 % 3 + 1) % 3] == lo, forward1 = faces[c1 / 3][(c1 % 3 + 1) % 3] == lo;
         if (forward0 == forward1) ++inconsistentEdges_;
       } else {
-        edgeCorners_.push_back({spokes[i].corner, -1});
+        edgeCorners_.back()[0] = spokeCorner(spokes[i]);
+        edgeCorners_.back()[1] = -1;
         ++boundaryEdges_;
         boundaryVertex_[lo] = boundaryVertex_[hi] = 1;
       }
