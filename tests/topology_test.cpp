@@ -147,7 +147,11 @@ TEST(Topology, HighValenceVertex) {
   for (int k = t.ringBegin(0) + 1; k < t.ringEnd(0); ++k) EXPECT_LT(t.ringVertex(k - 1), t.ringVertex(k));
   for (int e = 0; e < t.edgeCount(); ++e) {
     EXPECT_LT(t.edgeVertices(e)[0], t.edgeVertices(e)[1]);
-    if (e > 0) EXPECT_LT(t.edgeVertices(e - 1), t.edgeVertices(e));
-    if (!t.isBoundaryEdge(e)) EXPECT_LT(t.edgeOppositeCorners(e)[0], t.edgeOppositeCorners(e)[1]);
+    if (e > 0) {
+      EXPECT_LT(t.edgeVertices(e - 1), t.edgeVertices(e));
+    }
+    if (!t.isBoundaryEdge(e)) {
+      EXPECT_LT(t.edgeOppositeCorners(e)[0], t.edgeOppositeCorners(e)[1]);
+    }
   }
 }
