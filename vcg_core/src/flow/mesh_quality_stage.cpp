@@ -43,6 +43,25 @@ std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& ro
   return region;
 }
 
+// The median area of the faces flagged in `region` (all faces if empty), 0 if there are none; the
+// isotropic remeshing's size (remeshMovingRegion) and the coarse start's count (coarseStartLevels)
+// both come from it. `total` (optional) receives the flagged faces' summed area.
+double medianFaceArea(const TriMesh& mesh, const std::vector<std::uint8_t>& region, double* total = nullptr) {
+  std::vector<double> areas;
+  areas.reserve(mesh.faces.size());
+  double sum = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    if (!region.empty() && !region[f]) continue;
+    const Face& t = mesh.faces[f];
+    areas.push_back(0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm());
+    sum += areas.back();
+  }
+  if (total) *total = sum;
+  if (areas.empty()) return 0;
+  std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
+  return areas[areas.size() / 2];
+}
+
 }  // namespace
 
 int closedGenus(const TriMesh& mesh) {
@@ -60,16 +79,8 @@ int coarseStartLevels(const TriMesh& mesh, const std::vector<std::uint8_t>& sele
   // The vertices the isotropic remeshing would give at its own size (remeshMovingRegion: faces
   // of the median area, two faces a vertex), not the input's: a scan of big and small triangles
   // has many more (the bull, midpoint-subdivided twice to 99,000 vertices: about 250,000).
-  std::vector<double> areas(mesh.faces.size());
   double total = 0;
-  for (std::size_t f = 0; f < areas.size(); ++f) {
-    const Face& t = mesh.faces[f];
-    areas[f] = 0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm();
-    total += areas[f];
-  }
-  if (areas.empty()) return 0;
-  std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
-  const double median = areas[areas.size() / 2];
+  const double median = medianFaceArea(mesh, {}, &total);
   if (!(median > 0) || !std::isfinite(total)) return 0;
   int levels = 0;
   for (double n = 0.5 * total / median; n >= 4.0 * kCoarseStartVertices; n /= 4) ++levels;
@@ -145,17 +156,9 @@ bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, Bou
   const Topology topo(mesh.vertexCount(), mesh.faces);
   const VertexRoles roles = assignRoles(topo, &selection, mode);
   std::vector<std::uint8_t> region = movingFaces(mesh, roles);
-  std::vector<double> areas;
-  for (int f = 0; f < mesh.faceCount(); ++f) {
-    if (!region[f]) continue;
-    const Face& t = mesh.faces[f];
-    areas.push_back(0.5 * (mesh.positions[t[1]] - mesh.positions[t[0]]).cross(mesh.positions[t[2]] - mesh.positions[t[0]]).norm());
-  }
-  if (areas.empty()) return false;
   // An equilateral triangle of the median face area (the mean would follow a refined neck down)
   // has edge sqrt(4A / √3).
-  std::nth_element(areas.begin(), areas.begin() + areas.size() / 2, areas.end());
-  const double target = coarsening * std::sqrt(4 * areas[areas.size() / 2] / std::sqrt(3.0));
+  const double target = coarsening * std::sqrt(4 * medianFaceArea(mesh, region) / std::sqrt(3.0));
   if (!(target > 0)) return false;
   // Edges three orders of magnitude longer than the region's typical one are not a surface to
   // remesh but a vertex thrown far away (fuzzing found one that made the remesher split for

@@ -21,20 +21,14 @@ namespace {
 constexpr double kEnergySlack = 1e-4;
 
 // Large systems are solved by conjugate gradients preconditioned with an earlier step's
-// factorisation while that takes few iterations (SpdSolver::solvePreconditioned): a step's matrix
-// differs from the last one by its τ (×1.5) and the geometry's small change, and after edge flips
-// by a few entries, so 4–9 solves with the old factor give the step's δ where a factorisation
-// costs about twenty. A solve that needed more than kRefactorAfter iterations, or did not
-// converge within kMaxIterations, makes the next step (or this one) factorise afresh. Below
-// kPreconditionFromRows rows a factorisation is cheap and every step has its own.
-// Measured on the armadillo's 1,978-edge hole (155,000 patch vertices, 15 steps, 4 of them by
-// conjugate gradients): flow 31.6 / 32.1 s -> 28.2 / 28.6 s in two paired runs, the same patch.
-// The tolerance is loose for a linear solve, tight for a step: the acceptance tests judge δ.
+// factorisation while that takes few iterations (SpdSolver::solveStep): a step's matrix differs
+// from the last one by its τ (×1.5) and the geometry's small change, and after edge flips by a few
+// entries, so 4–9 solves with the old factor give the step's δ where a factorisation costs about
+// twenty. Measured on the armadillo's 1,978-edge hole (155,000 patch vertices, 15 steps, 4 of them
+// by conjugate gradients): flow 31.6 / 32.1 s -> 28.2 / 28.6 s in two paired runs, the same patch.
 // The old factor is tried after large moves too (it once was not, after a move of an edge length
 // or more): the iteration count decides, and on 184,000 rows 11 iterations cost 0.7 s where a
 // factorisation costs 1.0 s. Fill of the armadillo's 794-edge hole 3.41 -> 2.52 s (one run each).
-constexpr double kPcgTolerance = 1e-4;  // of the preconditioned residual, relative to its start
-constexpr int kRefactorAfter = 8, kMaxIterations = 20;
 // From this many rows on, an earlier factorisation is tried first; below, every step factorises.
 // It was kCholmodMinRows (2,000): the elephant's 200-edge hole (1,522 free vertices, SimplicialLDLT)
 // then factorised at every step, and its flow took 80-81 ms; with the old factor tried first,
@@ -58,8 +52,6 @@ struct SemiImplicitIntegrator::SparseSolver {
   SemiImplicitSystem system;
   SpdSolver spd;
   Eigen::VectorXd delta;
-  bool analysed = false;     // spd's pattern is the system's (false after edge flips)
-  bool refactorNext = true;  // the next step factorises its own matrix
 };
 
 // Rows of the system (the free vertices, in vertex order) whenever the state's connectivity
@@ -74,7 +66,7 @@ void SemiImplicitIntegrator::buildRows(const FlowState& state) {
     if (state.roles().free[v]) rows[v] = row++;
   if (solver_ && rows == freeIndex_) {
     solver_->system.reset();
-    solver_->analysed = false;
+    solver_->spd.patternChanged();
   } else {
     solver_.reset();
   }
@@ -84,22 +76,7 @@ void SemiImplicitIntegrator::buildRows(const FlowState& state) {
 
 bool SemiImplicitIntegrator::solve() {
   SparseSolver& s = *solver_;
-  const Eigen::SparseMatrix<double>& K = s.system.matrix();
-  if (!s.refactorNext && K.rows() >= kPreconditionFromRows && s.spd.factored()) {
-    const int iterations = s.spd.solvePreconditioned(K, s.system.rhs(), s.delta, kPcgTolerance, kMaxIterations);
-    if (iterations >= 0) {
-      s.refactorNext = iterations > kRefactorAfter;
-      return true;
-    }
-  }
-  if (!s.analysed) {
-    s.spd.analyzePattern(K);  // the pattern depends on the topology only
-    s.analysed = true;
-  }
-  if (!s.spd.factorize(K)) return false;
-  s.spd.solve(s.system.rhs(), s.delta);
-  s.refactorNext = false;
-  return true;
+  return s.spd.solveStep(s.system.matrix(), s.system.rhs(), s.delta, kPreconditionFromRows);
 }
 
 void SemiImplicitIntegrator::speed(FlowState& state) {

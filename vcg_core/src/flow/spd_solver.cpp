@@ -110,7 +110,8 @@ bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
   return factored_ = impl_->simplicial->info() == Eigen::Success && (impl_->simplicial->vectorD().array() > 0).all();
 }
 
-void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+template <class Dense>
+void SpdSolver::solveDense(const Dense& b, Dense& x) const {
   [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
   if (impl_->supernodal) {
     [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
@@ -120,86 +121,93 @@ void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
   x = impl_->simplicial->solve(b);
 }
 
-void SpdSolver::solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
-  [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
-  if (impl_->supernodal) {
-    [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
-    X = impl_->supernodal->solve(B);
-    return;
-  }
-  X = impl_->simplicial->solve(B);
-}
+void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const { solveDense(b, x); }
+void SpdSolver::solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const { solveDense(B, X); }
 
-int SpdSolver::solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
-                                   double tolerance, int maxIterations) const {
-  if (!factored_ || A.rows() != B.rows()) return -1;
-  const Eigen::Index columns = B.cols();
-  X.setZero(B.rows(), columns);
-  Eigen::MatrixXd R = B, Z, P, AP;
-  solve(R, Z);
+// Conjugate gradients on each column of b (a vector is one column), in step: one solve with the
+// factorisation per iteration for all columns; a column stops once it meets the tolerance.
+template <class Dense>
+int SpdSolver::conjugateGradients(const Eigen::SparseMatrix<double>& A, const Dense& b, Dense& x, double tolerance,
+                                  int maxIterations) const {
+  if (!factored_ || A.rows() != b.rows()) return -1;
+  const Eigen::Index columns = b.cols();
+  x.setZero(b.rows(), columns);
+  Dense r = b, z, p, Ap;
+  solveDense(r, z);
   Eigen::VectorXd start(columns), rz(columns);
   std::vector<bool> done(columns, false);
   for (Eigen::Index c = 0; c < columns; ++c) {
-    start[c] = rz[c] = R.col(c).dot(Z.col(c));
+    start[c] = rz[c] = r.col(c).dot(z.col(c));
     if (!(start[c] > 0)) {
       if (start[c] != 0) return -1;
       done[c] = true;  // b = 0: x = 0 solves it
     }
   }
-  P = Z;
+  auto allDone = [&] { return std::all_of(done.begin(), done.end(), [](bool d) { return d; }); };
+  p = z;
   for (int k = 1; k <= maxIterations; ++k) {
-    if (std::all_of(done.begin(), done.end(), [](bool d) { return d; })) return k - 1;
-    AP.noalias() = A.selfadjointView<Eigen::Lower>() * P;
+    if (allDone()) return k - 1;
+    Ap.noalias() = A.selfadjointView<Eigen::Lower>() * p;
     for (Eigen::Index c = 0; c < columns; ++c) {
       if (done[c]) continue;
-      const double curvature = P.col(c).dot(AP.col(c));
+      const double curvature = p.col(c).dot(Ap.col(c));
       if (!(curvature > 0)) return -1;
       const double alpha = rz[c] / curvature;
-      X.col(c) += alpha * P.col(c);
-      R.col(c) -= alpha * AP.col(c);
+      x.col(c) += alpha * p.col(c);
+      r.col(c) -= alpha * Ap.col(c);
     }
-    solve(R, Z);
+    solveDense(r, z);
     for (Eigen::Index c = 0; c < columns; ++c) {
       if (done[c]) continue;
-      const double next = R.col(c).dot(Z.col(c));
+      const double next = r.col(c).dot(z.col(c));
       if (!std::isfinite(next)) return -1;
       if (next <= tolerance * tolerance * start[c]) {
         done[c] = true;
-        P.col(c).setZero();  // A·0 = 0: the finished column costs the product nothing but zeros
+        p.col(c).setZero();  // A·0 = 0: a finished column adds nothing to the product
         continue;
       }
-      P.col(c) = Z.col(c) + (next / rz[c]) * P.col(c);
+      p.col(c) = z.col(c) + (next / rz[c]) * p.col(c);
       rz[c] = next;
     }
   }
-  return std::all_of(done.begin(), done.end(), [](bool d) { return d; }) ? maxIterations : -1;
+  return allDone() ? maxIterations : -1;
 }
 
 int SpdSolver::solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
                                    double tolerance, int maxIterations) const {
-  if (!factored_ || A.rows() != b.size()) return -1;
-  x.setZero(b.size());
-  Eigen::VectorXd r = b, z, p, Ap;
-  solve(r, z);
-  const double start = r.dot(z);
-  if (!(start > 0)) return start == 0 ? 0 : -1;  // b = 0: x = 0 solves it
-  p = z;
-  double rz = start;
-  for (int k = 1; k <= maxIterations; ++k) {
-    Ap.noalias() = A.selfadjointView<Eigen::Lower>() * p;
-    const double curvature = p.dot(Ap);
-    if (!(curvature > 0)) return -1;
-    const double alpha = rz / curvature;
-    x += alpha * p;
-    r -= alpha * Ap;
-    solve(r, z);
-    const double next = r.dot(z);
-    if (!std::isfinite(next)) return -1;
-    if (next <= tolerance * tolerance * start) return k;
-    p = z + (next / rz) * p;
-    rz = next;
+  return conjugateGradients(A, b, x, tolerance, maxIterations);
+}
+
+int SpdSolver::solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                                   double tolerance, int maxIterations) const {
+  return conjugateGradients(A, B, X, tolerance, maxIterations);
+}
+
+template <class Dense>
+bool SpdSolver::step(const Eigen::SparseMatrix<double>& A, const Dense& b, Dense& x, int reuseFromRows) {
+  if (!refactorNext_ && A.rows() >= reuseFromRows && factored_) {
+    const int iterations = conjugateGradients(A, b, x, kPcgTolerance, kMaxIterations);
+    if (iterations >= 0) {
+      refactorNext_ = iterations > kRefactorAfter;
+      return true;
+    }
   }
-  return -1;
+  if (patternChanged_) analyzePattern(A);
+  patternChanged_ = false;
+  if (!factorize(A)) return false;
+  solveDense(b, x);
+  refactorNext_ = false;
+  return true;
+}
+
+bool SpdSolver::solveStep(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                          int reuseFromRows) {
+  return step(A, b, x, reuseFromRows);
+}
+
+bool SpdSolver::solveStep(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                          int reuseFromRows) {
+  return step(A, B, X, reuseFromRows);
 }
 
 const char* SpdSolver::backendName() const {

@@ -61,6 +61,23 @@ class SpdSolver {
   /// −1 as above if any column did not converge.
   int solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
                           double tolerance, int maxIterations) const;
+  /// One step of a flow whose matrix changes a little from step to step: solves A X = B. From
+  /// `reuseFromRows` rows on it first runs solvePreconditioned with the held factorisation (an
+  /// earlier step's) unless the last such solve took more than kRefactorAfter iterations; if that
+  /// does not converge within kMaxIterations, or below `reuseFromRows`, it factorises A (analysing
+  /// its pattern first after patternChanged()) and solves directly. False if A is not numerically
+  /// positive definite. The tolerance is loose for a linear solve and tight for a step: a flow's
+  /// acceptance tests judge the step, and every CG iterate from 0 is a descent direction.
+  bool solveStep(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
+                 int reuseFromRows);
+  bool solveStep(const Eigen::SparseMatrix<double>& A, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                 int reuseFromRows);
+  /// The matrices solveStep gets from now on have another sparsity pattern (edge flips): the next
+  /// factorisation analyses it first; the held factorisation still preconditions until then.
+  void patternChanged() { patternChanged_ = true; }
+  static constexpr double kPcgTolerance = 1e-4;  // of the preconditioned residual, relative to its start
+  static constexpr int kRefactorAfter = 8, kMaxIterations = 20;
+
   /// Whether a factorisation is held (what solve() and solvePreconditioned() use).
   bool factored() const { return factored_; }
 
@@ -69,8 +86,17 @@ class SpdSolver {
 
  private:
   struct Impl;
+  template <class Dense>
+  void solveDense(const Dense& b, Dense& x) const;
+  template <class Dense>
+  int conjugateGradients(const Eigen::SparseMatrix<double>& A, const Dense& b, Dense& x, double tolerance,
+                         int maxIterations) const;
+  template <class Dense>
+  bool step(const Eigen::SparseMatrix<double>& A, const Dense& b, Dense& x, int reuseFromRows);
+
   std::unique_ptr<Impl> impl_;
   bool factored_ = false;
+  bool patternChanged_ = false, refactorNext_ = false;
 };
 
 }  // namespace elastica

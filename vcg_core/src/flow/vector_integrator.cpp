@@ -36,16 +36,13 @@ constexpr int kMaxCulprits = 16, kMaxHoldRounds = 3;
 // Faces about to cross hold their corners (and rings) too; a contact zone spans more vertices than
 // a turned face does.
 constexpr int kMaxContactCulprits = 4 * kMaxCulprits;
-// Large systems are solved by conjugate gradients preconditioned with an earlier step's
-// factorisation while that takes few iterations (as the semi-implicit scheme does, there from 500
+// From this many rows on, a step is first solved by conjugate gradients preconditioned with an
+// earlier step's factorisation (SpdSolver::solveStep; the semi-implicit scheme does so from 500
 // rows): a step's matrix differs from the last one by its τ (×2 or ×0.5) and the geometry's small
-// change. A solve that needed more than kRefactorAfter iterations, or did not converge within
-// kMaxIterations, makes the next step (or this one) factorise afresh. Below kPreconditionFromRows
-// rows every step has its own factorisation, as before this reuse: there it costs little. On the 163,842-vertex noisy icosphere's full-size
-// stage (143,634 vertices, coarse start) the second and third steps took 2 iterations each, 0.28 s,
-// where the first step's factorisation took 1.2 s after a 1.5 s analysis (one quiet run).
-constexpr double kPcgTolerance = 1e-4;  // of the preconditioned residual, relative to its start
-constexpr int kRefactorAfter = 8, kMaxIterations = 20;
+// change. Below, every step has its own factorisation, as before this reuse: there it costs
+// little. On the 163,842-vertex noisy icosphere's full-size stage (143,634 vertices, coarse start)
+// the second and third steps took 2 iterations each, 0.28 s, where the first step's factorisation
+// took 1.2 s after a 1.5 s analysis (one quiet run).
 constexpr int kPreconditionFromRows = 20000;
 // An accepted step is carried on along its direction to at most this many times its length while
 // W keeps falling (VectorIntegrator::tryStep).
@@ -56,7 +53,6 @@ constexpr double kMaxExtrapolation = 8;
 struct VectorIntegrator::SparseSolver {
   SemiImplicitSystem system;
   SpdSolver spd;
-  bool analysed = false, refactorNext = false;
 };
 
 void VectorIntegrator::buildRows(const FlowState& state) {
@@ -77,25 +73,7 @@ bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
   Eigen::MatrixXd b(n, 3), x;
   for (std::size_t v = 0; v < freeIndex_.size(); ++v)
     if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = -0.25 * tau * gradient[v].transpose();
-  // Every iterate of conjugate gradients from 0 on an SPD matrix is a descent direction
-  // (bᵀx_k ≥ ½ x_kᵀK x_k > 0), so an inexact δ is still a step the acceptance tests can judge.
-  bool solved = false;
-  if (!s.refactorNext && n >= kPreconditionFromRows && s.spd.factored()) {
-    const int iterations = s.spd.solvePreconditioned(K, b, x, kPcgTolerance, kMaxIterations);
-    if (iterations >= 0) {
-      s.refactorNext = iterations > kRefactorAfter;
-      solved = true;
-    }
-  }
-  if (!solved) {
-    if (!s.analysed) {
-      s.spd.analyzePattern(K);
-      s.analysed = true;
-    }
-    if (!s.spd.factorize(K)) return false;
-    s.spd.solve(b, x);
-    s.refactorNext = false;
-  }
+  if (!s.spd.solveStep(K, b, x, kPreconditionFromRows)) return false;
   delta_.assign(freeIndex_.size(), Vec3::Zero());
   for (std::size_t v = 0; v < freeIndex_.size(); ++v)
     if (freeIndex_[v] >= 0) delta_[v] = x.row(freeIndex_[v]).transpose();
