@@ -81,7 +81,7 @@ section=$(cat <<END_OF_SECTION
 Made by \`$command_line\` (it writes this section and \`docs/figures/cage_*.png\`; every number is
 read from that run). Each cage in \`data/cages/\` (written by hand, not by \`elastica generate\`; see
 data/README.md) is faired by \`elastica fair CAGE -o OUT --subdivide $levels\`: the default
-(\`--scheme auto\`: the vector scheme, or the semi-implicit one below 1,500 vertices per handle)
+(\`--scheme auto\`: the vector scheme, or the semi-implicit one below 600 vertices per handle as drawn)
 with the working-resolution floor (100 vertices plus 1,000 per handle before the first flow), isotropic and
 curvature-adaptive remeshing, Delaunay flips and the embedding guard (docs/cli.md, "The default"). Genus, energy (mixed areas),
 faces crossing another face (vcglib's \`Clean::SelfIntersections\`, an implementation independent

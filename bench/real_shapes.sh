@@ -71,13 +71,14 @@ if ((page)); then
     cat <<'TEXT'
 Whole closed scans from Debian's libcgal-demo, each faired by `elastica fair` with the
 semi-implicit scheme (the default until issue 28) and with `auto`, today's default (the vector
-scheme, or the semi-implicit one on meshes with handles and under 1,500 vertices per handle: the
-elephant, the elk, the femur). Attempts count refused steps too; E is the total curvature energy (a round
+scheme, or the semi-implicit one on meshes with handles and under 600 vertices per handle, and
+where the vector scheme cannot take its first step: the femur). Attempts count refused steps too; E is the total curvature energy (a round
 sphere: 8π ≈ 25.13); *crossing faces* is vcglib's self-intersection test on the output (the cow's
 input already has 137); *spread* is (max − min)/r of the vertices' distances to the least-squares
 sphere. Stops: `converged` (the shape stopped changing at the flow's time scale), `self_contact`
 (the surface pressed against itself for 10 steps, or only crossing itself would lower E),
-`stalled`, `max_seconds`. Genus −1: the file has two components.
+`stalled`, `max_seconds`. Genus −1: the genus formula does not apply (the 10k dragon is one
+component with two triangular holes).
 
 TEXT
     echo "Commit $commit (with the working tree's changes, if any), $(date -u +%Y-%m-%dT%H:%MZ), load average at the end of the run $(cut -d' ' -f1-3 /proc/loadavg); one run per row, 60 s limit, \`elastica fair IN -o OUT --scheme S --max-seconds 60\`."

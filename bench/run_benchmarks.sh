@@ -152,7 +152,7 @@ EOF
 ## 5. The default pipeline across resolutions
 
 \`fair\` on tori R/r = 3 (→ the Clifford torus, R/r = √2, E = 8π²) at several resolutions, every
-vertex free: the default (\`--scheme auto\`: the vector scheme from 1,500 vertices per handle,
+vertex free: the default (\`--scheme auto\`: the vector scheme from 600 vertices per handle of the input,
 the semi-implicit one below; remeshing, flips and the embedding guard), the semi-implicit pipeline
 and the paper's explicit scheme (stopped at its energy plateau or ${explicit_seconds} s). Steps count
 attempts (rejected ones included) for the adaptive schemes; R/r is a least-squares fit of a torus of
