@@ -1,4 +1,5 @@
 #include "restoration/hole_boundary.h"
+#include "operators/corner_angle.h"
 
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
@@ -150,8 +151,6 @@ FillInputDefects countFillInputDefects(const TriMesh& mesh) {
 
 namespace {
 
-double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
-
 // A loop's outline: centroid, unit mean normal (Newell's), radius (farthest vertex from the
 // centroid) and bounding box.
 struct Outline {
@@ -245,7 +244,7 @@ double cornerAngleSum(const TriMesh& mesh, VertexFaces::FaceRange faces, int v) 
   for (int f : faces) {
     const Face& t = mesh.faces[f];
     const int j = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-    sum += angleBetween(mesh.positions[t[(j + 1) % 3]] - mesh.positions[v], mesh.positions[t[(j + 2) % 3]] - mesh.positions[v]);
+    sum += cornerAngle(mesh.positions[v], mesh.positions[t[(j + 1) % 3]], mesh.positions[t[(j + 2) % 3]]);
   }
   return sum;
 }
