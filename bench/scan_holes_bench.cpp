@@ -29,7 +29,7 @@
 #include <elastica/topology.h>
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
-#include "mesh/submesh.h"
+#include <elastica/vertex_faces.h>
 
 #include <algorithm>
 #include <chrono>
@@ -126,7 +126,7 @@ std::vector<int> spreadSeeds(const TriMesh& m, int count) {
 // border has `edges` edges. Faces touching a `taken` vertex (an earlier hole and the ring around
 // it) are never cut, so the holes stay apart. Marks the cut faces in `removed` and returns the
 // border edge count reached.
-int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, std::vector<std::uint8_t>& removed,
+int cutDisc(const TriMesh& m, const VertexFaces& vf, int seed, int edges, std::vector<std::uint8_t>& removed,
             std::vector<std::uint8_t>& taken, std::vector<double>& dist, std::vector<std::uint8_t>& settled) {
   std::vector<int> touched{seed}, cut;
   std::priority_queue<std::pair<double, int>, std::vector<std::pair<double, int>>, std::greater<>> queue;
@@ -134,7 +134,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
   queue.emplace(0.0, seed);
   // The face across edge (a, b) from face f, or -1.
   auto across = [&](int f, int a, int b) {
-    for (int g : vf[a]) {
+    for (int g : vf.faces(a)) {
       if (g == f) continue;
       const Face& t = m.faces[g];
       if (t[0] == b || t[1] == b || t[2] == b) return g;
@@ -147,7 +147,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
     queue.pop();
     if (d > dist[v] || settled[v]) continue;
     settled[v] = 1;
-    for (int f : vf[v]) {
+    for (int f : vf.faces(v)) {
       if (border >= edges) break;
       const Face& t = m.faces[f];
       if (removed[f] || !settled[t[0]] || !settled[t[1]] || !settled[t[2]]) continue;
@@ -159,7 +159,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
         border += g >= 0 && removed[g] ? -1 : 1;
       }
     }
-    for (int f : vf[v]) {
+    for (int f : vf.faces(v)) {
       for (int w : m.faces[f]) {
         if (taken[w]) continue;  // a wall: the disc does not wrap around an earlier hole
         const double l = d + (m.positions[w] - m.positions[v]).norm();
@@ -183,7 +183,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
     const int v = work.back();
     work.pop_back();
     int changes = 0;  // edges at v between a cut face and a kept one
-    for (int f : vf[v]) {
+    for (int f : vf.faces(v)) {
       for (int x : m.faces[f]) {
         if (x == v) continue;
         const int g = across(f, v, x);
@@ -191,7 +191,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
       }
     }
     if (changes <= 2) continue;
-    for (int f : vf[v]) {
+    for (int f : vf.faces(v)) {
       if (removed[f]) continue;
       removed[f] = 1;
       cut.push_back(f);
@@ -207,7 +207,7 @@ int cutDisc(const TriMesh& m, const VertexFaceIndex& vf, int seed, int edges, st
   // The hole and one ring of faces around it are off limits to the next holes.
   for (int f : cut)
     for (int v : m.faces[f])
-      for (int g : vf[v])
+      for (int g : vf.faces(v))
         for (int w : m.faces[g]) taken[w] = 1;
   return border;
 }
@@ -321,7 +321,7 @@ static int run(int argc, char** argv) {
     for (int i = 0; i < holes; ++i)
       sizes[i] = static_cast<int>(std::lround(minEdges * std::pow(double(maxEdges) / minEdges, holes > 1 ? double(i) / (holes - 1) : 0)));
     std::shuffle(sizes.begin(), sizes.end(), std::mt19937(42));
-    const VertexFaceIndex vf(full);
+    const VertexFaces vf(full.vertexCount(), full.faces);
     const std::vector<int> seeds = spreadSeeds(full, holes);
     std::vector<std::uint8_t> removed(full.faces.size(), 0), taken(full.positions.size(), 0), settled(full.positions.size(), 0);
     std::vector<double> dist(full.positions.size(), std::numeric_limits<double>::infinity());

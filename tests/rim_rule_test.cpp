@@ -64,8 +64,8 @@ std::vector<Case> cases() {
 std::vector<RimMeasure> measure(const TriMesh& mesh, std::vector<HoleLoop>& loops) {
   const Topology topo(mesh.vertexCount(), mesh.faces);
   loops = findHoleLoops(topo);
-  const VertexFaceIndex adjacency(mesh);
-  return classifyRims(mesh, loops, [&](int v) { return cornerAngleSum(mesh, adjacency[v], v); });
+  const VertexFaces adjacency(mesh.vertexCount(), mesh.faces);
+  return classifyRims(mesh, loops, [&](int v) { return cornerAngleSum(mesh, adjacency.faces(v), v); });
 }
 
 // The rule on each shape, at three scales (it is scale-free), with the measures it read.

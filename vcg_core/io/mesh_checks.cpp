@@ -12,6 +12,9 @@
 // no second copy of it.
 #include "readers.h"
 
+#include <elastica/vertex_faces.h>
+#include <elastica/vertex_fans.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -26,11 +29,6 @@ namespace {
 constexpr double kMaxCoordinate = 1e30;
 
 using Tri = std::array<int, 3>;
-
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
 
 std::uint64_t mix(std::uint64_t h) {  // splitmix64's finaliser
   h ^= h >> 30;
@@ -68,20 +66,6 @@ class FirstOccurrence {
   std::vector<int> slots_;
 };
 
-// The faces around each vertex: corners 3f + k of vertex v are corners[offset[v] .. offset[v+1]),
-// in increasing order.
-struct VertexCorners {
-  std::vector<int> offset, corners;
-  VertexCorners(const std::vector<Tri>& faces, int nv) : offset(nv + 1, 0), corners(3 * faces.size()) {
-    for (const Tri& t : faces)
-      for (int v : t) ++offset[v + 1];
-    std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    std::vector<int> cursor(offset.begin(), offset.end() - 1);
-    for (int f = 0; f < static_cast<int>(faces.size()); ++f)
-      for (int k = 0; k < 3; ++k) corners[cursor[faces[f][k]]++] = 3 * f + k;
-  }
-};
-
 // The faces at vertex v seen from v: one spoke per edge of a face at v, packed in one integer
 // (other end << 32 | face << 1 | the face runs v -> other), so that sorting the integers sorts
 // by (other end, face). (A struct of these fields, built field by field and copied whole, stalled
@@ -112,29 +96,19 @@ void sortSpokes(std::vector<Spoke>& spokes) {
 // Splits vertex v, whose faces form several fans (joined across edges at v), into one vertex per
 // fan: the first fan keeps v, the others get new vertices appended to `positions`, in the order
 // of their first corner.
-void splitFans(int v, std::vector<Tri>& faces, const VertexCorners& vc, std::vector<Vec3>& positions) {
-  const int n = vc.offset[v + 1] - vc.offset[v];
-  std::vector<std::pair<int, int>> spokes;  // (other vertex of an edge at v, local corner)
-  std::vector<int> parent(n), copyOf(n, -1);
-  std::iota(parent.begin(), parent.end(), 0);
-  for (int i = 0; i < n; ++i) {
-    const int c = vc.corners[vc.offset[v] + i];
-    spokes.emplace_back(faces[c / 3][(c % 3 + 1) % 3], i);
-    spokes.emplace_back(faces[c / 3][(c % 3 + 2) % 3], i);
-  }
-  std::sort(spokes.begin(), spokes.end());
-  for (size_t i = 1; i < spokes.size(); ++i)
-    if (spokes[i].first == spokes[i - 1].first)
-      parent[findRoot(parent, spokes[i].second)] = findRoot(parent, spokes[i - 1].second);
-  copyOf[findRoot(parent, 0)] = v;  // fan root → vertex index it gets
-  for (int i = 0; i < n; ++i) {
-    const int r = findRoot(parent, i);
-    if (copyOf[r] < 0) {
-      copyOf[r] = static_cast<int>(positions.size());
+void splitFans(int v, std::vector<Tri>& faces, const VertexFaces& vf, std::vector<Vec3>& positions, FanScratch& scratch) {
+  const VertexFaces::CornerRange corners = vf.corners(v);
+  std::vector<int> fan;
+  const int fans = fansAt(faces, corners.begin(), corners.size(), fan, scratch);
+  std::vector<int> copyOf(fans, -1);  // fan → vertex index it gets
+  copyOf[0] = v;
+  for (std::size_t i = 0; i < corners.size(); ++i) {
+    if (copyOf[fan[i]] < 0) {
+      copyOf[fan[i]] = static_cast<int>(positions.size());
       positions.push_back(positions[v]);
     }
-    const int c = vc.corners[vc.offset[v] + i];
-    faces[c / 3][c % 3] = copyOf[r];
+    const int c = corners.begin()[i];
+    faces[c / 3][c % 3] = copyOf[fan[i]];
   }
 }
 
@@ -142,23 +116,24 @@ void splitFans(int v, std::vector<Tri>& faces, const VertexCorners& vc, std::vec
 // faces (the first in (lo, hi) order) and edges traversed the same way by both faces (after all
 // edges), then splits every bow-tie vertex into one vertex per fan (new vertices appended to
 // `positions`, vertex by vertex). Returns how many were split.
-int checkEdgesAndSplitFans(const std::string& path, std::vector<Tri>& faces, const VertexCorners& vc,
+int checkEdgesAndSplitFans(const std::string& path, std::vector<Tri>& faces, const VertexFaces& vf,
                            std::vector<Vec3>& positions, bool merged) {
   size_t inconsistent = 0;
   int firstLo = -1, firstHi = -1;
   std::vector<Spoke> spokes;
-  std::vector<int> parent, bowTies;
-  const int nv = static_cast<int>(vc.offset.size()) - 1;
-  const int nc = static_cast<int>(vc.corners.size());
+  std::vector<int> fan, bowTies;
+  FanScratch scratch;
+  const int nv = vf.builtVertexCount();
+  const int nc = 3 * static_cast<int>(faces.size());
   for (int lo = 0; lo < nv; ++lo) {
-    const int n = vc.offset[lo + 1] - vc.offset[lo];
-    const int* corners = vc.corners.data() + vc.offset[lo];
+    const int n = vf.offset(lo + 1) - vf.offset(lo);
+    const int* corners = vf.corners(lo).begin();
     spokes.clear();
     for (int i = 0; i < n; ++i) {
       // The faces around a vertex lie anywhere in the face array: each is asked for from the
       // cache kAhead corners before it is read, so the misses overlap.
       constexpr int kAhead = 16;
-      if (vc.offset[lo] + i + kAhead < nc) __builtin_prefetch(&faces[corners[i + kAhead] / 3]);
+      if (vf.offset(lo) + i + kAhead < nc) __builtin_prefetch(&faces[corners[i + kAhead] / 3]);
       const int c = corners[i], f = c / 3, k = c % 3;
       spokes.push_back(spoke(faces[f][(k + 1) % 3], f, true));
       spokes.push_back(spoke(faces[f][(k + 2) % 3], f, false));
@@ -166,9 +141,7 @@ int checkEdgesAndSplitFans(const std::string& path, std::vector<Tri>& faces, con
     sortSpokes(spokes);
     // The corners of lo are in increasing face order: a face's place among them by bisection.
     auto place = [&](int f) { return static_cast<int>(std::lower_bound(corners, corners + n, 3 * f) - corners); };
-    parent.resize(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    int fans = n;
+    scratch.join.reset(n);
     for (size_t i = 0; i < spokes.size();) {
       const int hi = spokeOther(spokes[i]);
       size_t j = i + 1;
@@ -182,13 +155,11 @@ int checkEdgesAndSplitFans(const std::string& path, std::vector<Tri>& faces, con
         if (firstLo < 0) firstLo = lo, firstHi = hi;
         ++inconsistent;
       }
-      for (size_t m = i + 1; m < j; ++m) {
-        const int a = findRoot(parent, place(spokeFace(spokes[m]))), b = findRoot(parent, place(spokeFace(spokes[i])));
-        if (a != b) parent[a] = b, --fans;
-      }
+      // The faces of one edge at lo are one fan (the spokes already sorted, FanJoin joins them).
+      for (size_t m = i + 1; m < j; ++m) scratch.join.join(place(spokeFace(spokes[m])), place(spokeFace(spokes[i])));
       i = j;
     }
-    if (fans > 1) bowTies.push_back(lo);
+    if (n > 1 && scratch.join.number(fan) > 1) bowTies.push_back(lo);
   }
   if (inconsistent > 0)
     fail(path, "faces are not consistently oriented (" + std::to_string(inconsistent) +
@@ -197,7 +168,7 @@ int checkEdgesAndSplitFans(const std::string& path, std::vector<Tri>& faces, con
                    "); re-orient them first, e.g. in MeshLab: Filters > Normals > Re-Orient all faces coherently");
   // Splitting a vertex renames its corners only; faces joined across an edge at a later vertex
   // stay joined, so the fans found above are the fans found after the earlier splits.
-  for (int v : bowTies) splitFans(v, faces, vc, positions);
+  for (int v : bowTies) splitFans(v, faces, vf, positions, scratch);
   return static_cast<int>(bowTies.size());
 }
 
@@ -317,9 +288,9 @@ void checkAndRepair(const std::string& path, TriMesh& mesh, std::vector<std::uin
                    ") uses a vertex twice or collapses when coincident vertices are merged");
 
   {
-    const VertexCorners corners(faces, nv);
+    const VertexFaces vertexFaces(nv, faces);
     report.nonManifoldVerticesSplit =
-        checkEdgesAndSplitFans(path, faces, corners, positions, report.duplicateVerticesMerged > 0);
+        checkEdgesAndSplitFans(path, faces, vertexFaces, positions, report.duplicateVerticesMerged > 0);
   }
 
   // Drop vertices no face uses (never referenced, or merged away), keeping the file's order.

@@ -26,3 +26,5 @@
 #include <elastica/subdivision.h>
 #include <elastica/topology.h>
 #include <elastica/types.h>
+#include <elastica/vertex_faces.h>
+#include <elastica/vertex_fans.h>

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <elastica/types.h>
+#include <elastica/vertex_faces.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -50,15 +51,17 @@ class Topology {
   int valence(int v) const { return ringOffset_[v + 1] - ringOffset_[v]; }
 
   /// Corners of vertex v: [cornerBegin(v), cornerEnd(v)) in corner().
-  int cornerBegin(int v) const { return cornerOffset_[v]; }
-  int cornerEnd(int v) const { return cornerOffset_[v + 1]; }
-  int corner(int k) const { return vertexCorner_[k]; }
+  int cornerBegin(int v) const { return corners_.offset(v); }
+  int cornerEnd(int v) const { return corners_.offset(v + 1); }
+  int corner(int k) const { return corners_.corner(k); }
+  /// The vertex→face adjacency itself (corners in increasing order), for what takes one.
+  const VertexFaces& vertexFaces() const { return corners_; }
 
   /// A vertex on a boundary edge. Boundary vertices carry no interior curvature: the energy skips
   /// them and the flows keep them fixed (or slide them) by constraint.
   bool isBoundaryVertex(int v) const { return boundaryVertex_[v] != 0; }
   /// A vertex referenced by no face.
-  bool isIsolatedVertex(int v) const { return cornerOffset_[v + 1] == cornerOffset_[v]; }
+  bool isIsolatedVertex(int v) const { return cornerEnd(v) == cornerBegin(v); }
 
   int boundaryEdgeCount() const { return boundaryEdges_; }
   /// Interior edges whose two faces traverse them in the same direction (inconsistent orientation).
@@ -81,7 +84,7 @@ class Topology {
   std::vector<std::array<int, 2>> edgeVertices_;
   std::vector<std::array<int, 2>> edgeCorners_;
   std::vector<int> ringOffset_, ringVertex_, ringEdge_;
-  std::vector<int> cornerOffset_, vertexCorner_;
+  VertexFaces corners_;
   std::vector<std::uint8_t> boundaryVertex_;
   int boundaryEdges_ = 0;
   int inconsistentEdges_ = 0;

@@ -473,11 +473,10 @@ class VectorReflows {
 // not counted: a cage's handles are drawn by a few vertices however finely it is subdivided, and
 // the semi-implicit scheme gets there sooner (the genus-2 and genus-3 block cages at --subdivide 3:
 // 622 and 801 attempts against the vector scheme's 734 and 1,748, at E 112.8 and 143.0).
-Scheme automaticScheme(const TriMesh& mesh, const std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt) {
-  const int genus = closedGenus(mesh);
+Scheme automaticScheme(const MovingRegion& region) {
+  const int genus = closedGenus(region.topology());
   if (genus == 0) return Scheme::Vector;
-  const std::vector<std::uint8_t> none;
-  long long moving = movingVertexCount(mesh, faceSelected ? *faceSelected : none, opt.boundary);
+  const long long moving = region.roles().freeCount;
   return moving >= static_cast<long long>(kVectorVerticesPerHandle) * (genus + 1) ? Scheme::Vector
                                                                                   : Scheme::SemiImplicit;
 }
@@ -506,10 +505,11 @@ FlowStage beginStage(const FlowState& state, int level) {
   return stage;
 }
 
-// Ends a stage that began at `stageStart` (run time): `mesh` takes its state, the report its record.
-void endStage(FlowState& state, FlowStage& stage, double stageStart, Run& run, TriMesh& mesh) {
-  mesh = state.mesh();
+// Ends a stage that began at `stageStart` (run time): `region` takes its state (the state is not to
+// be used after), the report its record.
+void endStage(FlowState& state, FlowStage& stage, double stageStart, Run& run, MovingRegion& region) {
   stage.energy = state.energy();
+  region = state.releaseRegion();
   stage.seconds = run.elapsed() - stageStart;
   run.report.stages.push_back(stage);
   run.report.energyFinal = stage.energy;
@@ -529,46 +529,40 @@ void endStage(FlowState& state, FlowStage& stage, double stageStart, Run& run, T
 // left needles, and relaxed, it converged round in 84 more steps. Reported as
 // FlowReport::untanglePasses.
 constexpr double kTangledAngleDegrees = 1;
-void untangleMovingRegion(TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode, bool always,
-                          FlowReport& report) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  const VertexRoles roles = assignRoles(topo, &selection, mode);
-  if (roles.freeCount == 0 || !(always || isTangled(mesh, roles.activeFace, kTangledAngleDegrees))) return;
-  report.untanglePasses += untangle(mesh, roles.free, roles.activeFace);
+void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report) {
+  const VertexRoles& roles = region.roles();
+  if (roles.freeCount == 0 || !(always || isTangled(region.mesh(), roles.activeFace, kTangledAngleDegrees))) return;
+  region.movePositions([&](TriMesh& mesh) { report.untanglePasses += untangle(mesh, roles.free, roles.activeFace); });
 }
 
-}  // namespace
-
-FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& requested,
-                      const InternalFlowOptions& internal) {
-  validate(requested, internal);
+// fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
+FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal) {
   // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
   FlowOptions opt = requested;
   // A fairing amount needs no scheme choice: its filter is linear (featureSizeStage).
   if (opt.scheme == Scheme::Automatic)
-    opt.scheme = opt.featureSize > 0 ? Scheme::Vector : automaticScheme(mesh, faceSelected, opt);
+    opt.scheme = opt.featureSize > 0 ? Scheme::Vector : automaticScheme(region);
   if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
   if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
   FlowReport report;
   report.scheme = opt.scheme;
   Run run{opt, internal, report};
 
-  std::vector<std::uint8_t> selection = faceSelected ? *faceSelected : std::vector<std::uint8_t>{};
-  if (!selection.empty() && selection.size() != mesh.faces.size())
-    throw InvalidInputError("fair: the selection has " + std::to_string(selection.size()) + " entries for " +
-                            std::to_string(mesh.faces.size()) + " faces");
+  const std::size_t selected = region.selection().size();
+  if (selected != 0 && selected != region.mesh().faces.size())
+    throw InvalidInputError("fair: the selection has " + std::to_string(selected) + " entries for " +
+                            std::to_string(region.mesh().faces.size()) + " faces");
   std::unique_ptr<BoundarySlider> slider;
-  if (opt.boundary == BoundaryMode::Slide)
-    slider = std::make_unique<BoundarySlider>(Topology(mesh.vertexCount(), mesh.faces), mesh.positions);
+  if (opt.boundary == BoundaryMode::Slide) slider = std::make_unique<BoundarySlider>(region.topology(), region.mesh().positions);
 
   // A fairing amount keeps the user's vertices and connectivity: no refinement, no remeshing.
   if (opt.scheme == Scheme::Vector && run.timeLimited()) {
-    FlowState state(mesh, selection, opt, internal, slider.get());
+    FlowState state(region.copyTakingCaches(), opt, internal, slider.get());
     requireMovingVertex(state);
     recordStart(report, state);
     FlowStage stage = beginStage(state, 0);
     featureSizeStage(state, run, stage);
-    endStage(state, stage, 0, run, mesh);  // the run's only stage: it started with the run
+    endStage(state, stage, 0, run, region);  // the run's only stage: it started with the run
     report.seconds = run.elapsed();
     return report;  // the selection is as it came, and every step is in the history
   }
@@ -580,8 +574,8 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   if (quality) stageOpt.flipEdges = true;
   int level = 0;
   if (quality) {
-    level = report.preSubdivisions = subdivideToWorkingResolution(mesh, selection, opt);
-    report.inputSelfIntersects = selfIntersects(mesh);
+    level = report.preSubdivisions = subdivideToWorkingResolution(region, opt);
+    report.inputSelfIntersects = selfIntersects(region.mesh());
   }
   // A stage that leaves the mesh unfit for the operators (needsRemeshing) is remeshed and flowed
   // again, at most kMaxReflows times per level.
@@ -597,22 +591,22 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   // A large closed mesh starts coarse (coarseStartLevels): its levels are added to the schedule's.
   // A coarse remeshing that would make faces cross is undone; the mesh is remeshed at its own size.
   int coarseLevels =
-      quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStartLevels(mesh, selection) : 0;
-  if (coarseLevels > 0 && !remeshMovingRegion(mesh, selection, opt.boundary, false, std::ldexp(1.0, coarseLevels)))
+      quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStartLevels(region) : 0;
+  if (coarseLevels > 0 && !remeshMovingRegion(region, false, std::ldexp(1.0, coarseLevels)))
     coarseLevels = 0;
   if (coarseLevels > 0) {
     ++report.remeshings;
     opt.subdivisionLevels += coarseLevels;
     report.coarseStartLevels = coarseLevels;
-  } else if (quality && !run.timeLimited() && remeshMovingRegion(mesh, selection, opt.boundary, false)) {
+  } else if (quality && !run.timeLimited() && remeshMovingRegion(region, false)) {
     ++report.remeshings;
   } else if (opt.scheme == Scheme::Vector) {
-    untangleMovingRegion(mesh, selection, opt.boundary, false, report);
+    untangleMovingRegion(region, false, report);
   }
   for (;; ++level) {
-    if (adaptive && remeshMovingRegion(mesh, selection, opt.boundary, true)) ++report.remeshings;
+    if (adaptive && remeshMovingRegion(region, true)) ++report.remeshings;
     adaptive = false;
-    FlowState state(mesh, selection, stageOpt, internal, slider.get());
+    FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
     requireMovingVertex(state);
     const bool refineLater = level < opt.subdivisionLevels &&
                              (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
@@ -633,14 +627,14 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
                                  report.stages.empty(), lastTau, best, bestEnergy, neckFormed);
         // The stage's output is its lowest-energy state (before any neck formed).
         if (neckFormed || bestEnergy < state.energy())
-          state = FlowState(best, selection, stageOpt, internal, slider.get());
+          state = FlowState(best, state.selection(), stageOpt, internal, slider.get());
         // Scheme::Automatic falls back to the semi-implicit scheme where the vector one cannot take
         // its first step (the femur, a CAD-like bone with slivers: every step refused, then each
         // remeshing grew the mesh and its energy).
         if (requested.scheme == Scheme::Automatic && stage.steps == 0 && report.stages.empty()) {
           opt.scheme = report.scheme = Scheme::SemiImplicit;
           report.stop = StopReason::Converged;
-          mesh = state.mesh();
+          region = state.releaseRegion();
           --level;
           continue;
         }
@@ -650,10 +644,10 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
                                        plateau, quality && !report.inputSelfIntersects, lastTau);
       }
     } catch (const FlowDivergedError&) {
-      mesh = state.mesh();  // the restored checkpoint (faces may have been flipped)
+      region = state.releaseRegion();  // the restored checkpoint (faces may have been flipped)
       throw;
     }
-    endStage(state, stage, stageStart, run, mesh);
+    endStage(state, stage, stageStart, run, region);
     // A semi-implicit plateau at a small step (semiImplicitStage returned false) is a promise only
     // once a longer run keeps it: a reflow of the same level (remeshed, τ grown again) that ends
     // within kConfirmedPlateau of the stage before it confirms the shape. The genus-2 and genus-3
@@ -677,7 +671,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
         report.stop = StopReason::Converged;
       }
     }
-    if (quality && reflow && (meshBound || needsRemeshing(mesh, selection, opt.boundary))) {
+    if (quality && reflow && (meshBound || needsRemeshing(region))) {
       ++reflows;  // remesh and flow this level again
       adaptive = true;
       --level;
@@ -686,7 +680,7 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     }
     if (!quality && opt.scheme == Scheme::Vector && meshBound && reflows < kMaxReflows) {  // connectivity kept
       ++reflows;
-      untangleMovingRegion(mesh, selection, opt.boundary, true, report);
+      untangleMovingRegion(region, true, report);
       --level;
       report.stop = StopReason::Converged;
       continue;
@@ -698,8 +692,13 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
     // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
     // midpoints' facets would be creases for the finer level to flow out (the 163k sphere's
     // full-size stage: 4 steps after midpoints, 3 after Loop; its middle stage 3 → 2).
-    if (coarseLevels > 0) subdivideLoop(mesh);
-    else subdivideOneLevel(mesh, selection);
+    if (coarseLevels > 0)
+      region.edit([](TriMesh& mesh, std::vector<std::uint8_t>&) {
+        subdivideLoop(mesh);
+        return true;
+      });
+    else
+      subdivideOneLevel(region);
   }
   // The final approach with the connectivity kept: the vector scheme's converged state is the
   // minimiser of W on this triangulation, whose tangential freedom can trade roundness for energy
@@ -709,18 +708,37 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
   // triangulation's: 0.2 % in 19 semi-implicit steps, E 24.74 (0.1 % above the vector minimum).
   if (opt.scheme == Scheme::Vector && !quality && !run.stopped &&
       report.stop == StopReason::Converged) {
-    untangleMovingRegion(mesh, selection, opt.boundary, true, report);
-    FlowState state(mesh, selection, stageOpt, internal, slider.get());
+    untangleMovingRegion(region, true, report);
+    FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
     FlowStage stage = beginStage(state, level);
     const double stageStart = run.elapsed();
     semiImplicitStage(state, run, stage, opt.energyTolerance, opt.plateauTolerance, false, lastTau);
-    endStage(state, stage, stageStart, run, mesh);
+    endStage(state, stage, stageStart, run, region);
   }
-  if (faceSelected && !faceSelected->empty()) *faceSelected = selection;
   report.seconds = run.elapsed();
   if (report.history.back().step != report.steps)
     report.history.push_back({report.steps, run.time, report.seconds, report.energyFinal});
   return report;
+}
+
+}  // namespace
+
+FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& requested,
+                      const InternalFlowOptions& internal) {
+  validate(requested, internal);
+  // The run works on a region that owns the mesh and the selection; the mesh goes back to the
+  // caller as the run leaves it, on success and on failure alike (as when the run worked on the
+  // caller's mesh in place).
+  MovingRegion region(std::move(mesh), faceSelected ? *faceSelected : std::vector<std::uint8_t>{}, requested.boundary);
+  try {
+    FlowReport report = fairRegion(region, requested, internal);
+    if (faceSelected && !faceSelected->empty()) *faceSelected = region.selection();
+    mesh = region.release();
+    return report;
+  } catch (...) {
+    mesh = region.release();
+    throw;
+  }
 }
 
 FlowReport fair(TriMesh& mesh, const FlowOptions& opt) { return fairMasked(mesh, nullptr, opt, {}); }

@@ -21,23 +21,18 @@ constexpr double kSlideRate = 0.1;
 
 }  // namespace
 
-FlowState::FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected, const FlowOptions& opt,
-                     const InternalFlowOptions& internal, BoundarySlider* slider)
-    : mesh_(std::move(mesh)),
-      opt_(opt),
-      internal_(internal),
-      selection_(faceSelected),
-      topo_(mesh_.vertexCount(), mesh_.faces),
-      slider_(slider) {
+FlowState::FlowState(MovingRegion region, const FlowOptions& opt, const InternalFlowOptions& internal, BoundarySlider* slider)
+    : region_(std::move(region)), opt_(opt), internal_(internal), slider_(slider) {
   buildConnectivity();
 }
 
 void FlowState::buildConnectivity() {
-  roles_ = assignRoles(topo_, &selection_, opt_.boundary);
-  if (slider_ && roles_.slidingCount > 0) slider_->attach(topo_, mesh_.positions, roles_.sliding);
+  const Topology& topo = region_.topology();  // built here if the region had none: throws here
+  const VertexRoles& roles = region_.roles();
+  if (slider_ && roles.slidingCount > 0) slider_->attach(topo, region_.mesh().positions, roles.sliding);
   int used = 0;
-  for (int v = 0; v < topo_.vertexCount(); ++v) used += !topo_.isIsolatedVertex(v);
-  scaleFree_ = opt_.flow == FlowType::Elastica && topo_.boundaryEdgeCount() == 0 && roles_.freeCount == used;
+  for (int v = 0; v < topo.vertexCount(); ++v) used += !topo.isIsolatedVertex(v);
+  scaleFree_ = opt_.flow == FlowType::Elastica && topo.boundaryEdgeCount() == 0 && roles.freeCount == used;
   static std::atomic<long long> rebuilds{0};
   connectivityVersion_ = ++rebuilds;  // an integrator's per-topology data (rows, sparsity pattern) is stale
   invalidate();
@@ -47,10 +42,10 @@ void FlowState::maintain(double area) {
   if (scaleFree_) normalizeArea(area);
   if (!opt_.flipEdges || ++checksSinceFlipSearch_ < internal_.flipInterval) return;
   checksSinceFlipSearch_ = 0;
-  if (mayFlip() && flipToDelaunay(mesh_, roles_.free) > 0) {
-    topo_ = Topology(mesh_.vertexCount(), mesh_.faces);
+  // The flips read the roles before the edit; the region drops its topology and roles if any edge
+  // flipped, and buildConnectivity() builds them again.
+  if (mayFlip() && region_.edit([&](TriMesh& mesh, std::vector<std::uint8_t>&) { return flipToDelaunay(mesh, roles().free) > 0; }))
     buildConnectivity();
-  }
 }
 
 // Whether flipToDelaunay could flip anything: an edge between free vertices is non-Delaunay
@@ -59,9 +54,11 @@ void FlowState::maintain(double area) {
 bool FlowState::mayFlip() {
   evaluate();
   if (geo_.degenerate.zeroAreaFaces > 0) return true;  // zero cotangents say nothing there
-  for (int e = 0; e < topo_.edgeCount(); ++e) {
-    const auto& ev = topo_.edgeVertices(e);
-    if (geo_.edgeWeight[e] < 0 && roles_.free[ev[0]] && roles_.free[ev[1]] && !topo_.isBoundaryEdge(e)) return true;
+  const Topology& topo = topology();
+  const std::vector<std::uint8_t>& free = roles().free;
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    const auto& ev = topo.edgeVertices(e);
+    if (geo_.edgeWeight[e] < 0 && free[ev[0]] && free[ev[1]] && !topo.isBoundaryEdge(e)) return true;
   }
   return false;
 }
@@ -74,28 +71,31 @@ void FlowState::normalizeArea(double area) {
   const double s = std::sqrt(area / now);
   Vec3 c = Vec3::Zero();
   int n = 0;
-  for (int v = 0; v < topo_.vertexCount(); ++v)
-    if (!topo_.isIsolatedVertex(v)) c += mesh_.positions[v], ++n;
+  const Topology& topo = topology();
+  std::vector<Vec3>& p = region_.positions();
+  for (int v = 0; v < topo.vertexCount(); ++v)
+    if (!topo.isIsolatedVertex(v)) c += p[v], ++n;
   c /= std::max(n, 1);
-  for (int v = 0; v < topo_.vertexCount(); ++v)
-    if (!topo_.isIsolatedVertex(v)) mesh_.positions[v] = c + s * (mesh_.positions[v] - c);
+  for (int v = 0; v < topo.vertexCount(); ++v)
+    if (!topo.isIsolatedVertex(v)) p[v] = c + s * (p[v] - c);
   invalidate();
 }
 
 void FlowState::setPositions(const std::vector<Vec3>& p) {
-  mesh_.positions = p;
+  region_.positions() = p;
   invalidate();
 }
 
 void FlowState::evaluateGeometry() {
   if (geometryEvaluated_) return;
-  computeGeometry(topo_, mesh_.positions, opt_.area, geo_);
+  computeGeometry(topology(), region_.positions(), opt_.area, geo_);
   struct Tally {
     double area = 0, minArea = std::numeric_limits<double>::infinity();
   };
   const double floor = 1e-12 * geo_.meanEdgeLength * geo_.meanEdgeLength;
-  const Tally t = parallelReduce(topo_.faceCount(), Tally{}, [&](int f, Tally& tally) {
-    if (!roles_.activeFace[f]) return;
+  const std::vector<std::uint8_t>& activeFace = roles().activeFace;
+  const Tally t = parallelReduce(topology().faceCount(), Tally{}, [&](int f, Tally& tally) {
+    if (!activeFace[f]) return;
     tally.area += geo_.faceArea[f];
     if (geo_.faceArea[f] > floor) tally.minArea = std::min(tally.minArea, geo_.faceArea[f]);
   }, [](Tally& a, const Tally& b) {
@@ -110,17 +110,18 @@ void FlowState::evaluateGeometry() {
 void FlowState::evaluate() {
   if (evaluated_) return;
   evaluateGeometry();
-  computeCurvature(topo_, geo_, mesh_.positions, opt_.curvature, curv_, lp_, &roles_.active);
+  computeCurvature(topology(), geo_, region_.positions(), opt_.curvature, curv_, lp_, &roles().active);
   if (opt_.boundary == BoundaryMode::Slide) {
     // A boundary vertex's H is one-sided; its free neighbours need one for Δ_B H. Use the mean of
     // its interior neighbours (a zero normal derivative of H across the boundary).
-    for (int v = 0; v < topo_.vertexCount(); ++v) {
-      if (!topo_.isBoundaryVertex(v)) continue;
+    const Topology& topo = topology();
+    for (int v = 0; v < topo.vertexCount(); ++v) {
+      if (!topo.isBoundaryVertex(v)) continue;
       double sum = 0;
       int n = 0;
-      for (int k = topo_.ringBegin(v); k < topo_.ringEnd(v); ++k) {
-        const int j = topo_.ringVertex(k);
-        if (!topo_.isBoundaryVertex(j)) sum += curv_.Hflow[j], ++n;
+      for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) {
+        const int j = topo.ringVertex(k);
+        if (!topo.isBoundaryVertex(j)) sum += curv_.Hflow[j], ++n;
       }
       curv_.Hflow[v] = n ? sum / n : 0.0;
     }
@@ -132,7 +133,7 @@ void FlowState::evaluate() {
 double FlowState::energy() {
   evaluate();
   if (!energyEvaluated_) {
-    energy_ = totalCurvatureEnergy(topo_, geo_, curv_, &roles_.active);
+    energy_ = totalCurvatureEnergy(topology(), geo_, curv_, &roles().active);
     energyEvaluated_ = true;
   }
   return energy_;
@@ -150,8 +151,8 @@ double FlowState::checkedMinArea() const {
 }
 
 void FlowState::slideBoundary() {
-  if (!slider_ || roles_.slidingCount == 0) return;
-  slider_->slide(topo_, mesh_.positions, roles_.sliding, kSlideRate);
+  if (!slider_ || roles().slidingCount == 0) return;
+  slider_->slide(topology(), region_.positions(), roles().sliding, kSlideRate);
   invalidate();
 }
 

@@ -1,5 +1,5 @@
-// The state of a flow at one resolution: the mesh, its topology and vertex roles (built once per
-// connectivity), and the per-step caches (geometry, curvature, energy, active areas) that a step
+// The state of a flow at one resolution: the moving region (the mesh with its topology and vertex
+// roles, built once per connectivity: flow/moving_region.h), and the per-step caches (geometry, curvature, energy, active areas) that a step
 // reads without allocating. The integrators (explicit_integrator.h, semi_implicit_integrator.h)
 // move its positions; the schedule (fairing.cpp) calls maintain() between steps.
 #pragma once
@@ -11,26 +11,35 @@
 #include "flow/boundary_slide.h"
 #include "flow/constraints.h"
 #include "flow/internal_flow_options.h"
+#include "flow/moving_region.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace elastica {
 
 class FlowState {
  public:
-  /// `faceSelected`: one byte per face, or empty for all faces. `slider` (Slide mode) must outlive
-  /// the state. @throws InvalidInputError on bad connectivity.
+  /// The state of `region` (whose mode must be opt.boundary), keeping its topology and roles if
+  /// it has them. `slider` (Slide mode) must outlive the state.
+  /// @throws InvalidInputError on bad connectivity.
+  FlowState(MovingRegion region, const FlowOptions& opt, const InternalFlowOptions& internal, BoundarySlider* slider);
+  /// `faceSelected`: one byte per face, or empty for all faces.
   FlowState(TriMesh mesh, const std::vector<std::uint8_t>& faceSelected, const FlowOptions& opt,
-            const InternalFlowOptions& internal, BoundarySlider* slider);
+            const InternalFlowOptions& internal, BoundarySlider* slider)
+      : FlowState(MovingRegion(std::move(mesh), faceSelected, opt.boundary), opt, internal, slider) {}
 
   const FlowOptions& options() const { return opt_; }
   const InternalFlowOptions& internalOptions() const { return internal_; }
-  const TriMesh& mesh() const { return mesh_; }
-  const Topology& topology() const { return topo_; }
-  const VertexRoles& roles() const { return roles_; }
+  const TriMesh& mesh() const { return region_.mesh(); }
+  const Topology& topology() const { return region_.topology(); }
+  const VertexRoles& roles() const { return region_.roles(); }
+  /// The region as the flow has left it (its topology and roles with it); the state is not to be
+  /// used after.
+  MovingRegion releaseRegion() { return std::move(region_); }
   /// The face selection and the boundary slider the state was made with (to make it again).
-  const std::vector<std::uint8_t>& selection() const { return selection_; }
+  const std::vector<std::uint8_t>& selection() const { return region_.selection(); }
   BoundarySlider* slider() const { return slider_; }
   /// A number no other connectivity of any state had: it changes whenever this state's topology
   /// and roles are rebuilt, so an integrator knows when its per-topology data is stale.
@@ -39,7 +48,7 @@ class FlowState {
   /// Replaces the positions (e.g. to roll back to a checkpoint).
   void setPositions(const std::vector<Vec3>& p);
   /// The positions, for an integrator to move; call invalidate() after moving them.
-  std::vector<Vec3>& positions() { return mesh_.positions; }
+  std::vector<Vec3>& positions() { return region_.positions(); }
   void invalidate() { evaluated_ = geometryEvaluated_ = false; }
 
   /// Geometry, curvature and energy of the current positions; cached until they change.
@@ -75,12 +84,9 @@ class FlowState {
   void normalizeArea(double area);
   bool mayFlip();
 
-  TriMesh mesh_;
+  MovingRegion region_;  // the mesh, the selection and the boundary mode, with topology and roles
   FlowOptions opt_;
   InternalFlowOptions internal_;
-  std::vector<std::uint8_t> selection_;
-  Topology topo_;
-  VertexRoles roles_;
   BoundarySlider* slider_;
   long long connectivityVersion_ = 0;
   int checksSinceFlipSearch_ = 0;  // InternalFlowOptions::flipInterval

@@ -62,65 +62,70 @@ double medianFaceArea(const TriMesh& mesh, const std::vector<std::uint8_t>& regi
   return areas[areas.size() / 2];
 }
 
+// H and K of the region's mesh as measureCurvature() gives them (its default options), on the
+// region's topology instead of a new one. H in the flow's sign: the callers read only |H| and H²,
+// which the reported sign (its negation) leaves bit for bit the same.
+Curvature curvatureOf(const MovingRegion& region) {
+  const CurvatureMeasureOptions defaults;
+  const Geometry geo = computeGeometry(region.topology(), region.mesh().positions, defaults.area);
+  return computeCurvature(region.topology(), geo, region.mesh().positions, defaults.curvature);
+}
+
 }  // namespace
 
-int closedGenus(const TriMesh& mesh) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
+int closedGenus(const Topology& topo) {
   if (topo.boundaryEdgeCount() > 0) return 0;
   int used = 0;
   for (int v = 0; v < topo.vertexCount(); ++v) used += !topo.isIsolatedVertex(v);
   return std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
 }
 
-int coarseStartLevels(const TriMesh& mesh, const std::vector<std::uint8_t>& selection) {
+int coarseStartLevels(const MovingRegion& region) {
+  const std::vector<std::uint8_t>& selection = region.selection();
   if (std::find(selection.begin(), selection.end(), 0) != selection.end()) return 0;
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  if (topo.boundaryEdgeCount() > 0) return 0;
+  if (region.topology().boundaryEdgeCount() > 0) return 0;
   // The vertices the isotropic remeshing would give at its own size (remeshMovingRegion: faces
   // of the median area, two faces a vertex), not the input's: a scan of big and small triangles
   // has many more (the bull, midpoint-subdivided twice to 99,000 vertices: about 250,000).
   double total = 0;
-  const double median = medianFaceArea(mesh, {}, &total);
+  const double median = medianFaceArea(region.mesh(), {}, &total);
   if (!(median > 0) || !std::isfinite(total)) return 0;
   int levels = 0;
   for (double n = 0.5 * total / median; n >= 4.0 * kCoarseStartVertices; n /= 4) ++levels;
   return levels;
 }
 
-int workingResolutionFloor(const TriMesh& mesh) { return kFloorVertices + kFloorVerticesPerHandle * closedGenus(mesh); }
-
-void subdivideOneLevel(TriMesh& mesh, std::vector<std::uint8_t>& selection) {
-  if (selection.empty())
-    subdivideMidpoint(mesh);
-  else
-    subdivideMidpointRegion(mesh, selection);
+int workingResolutionFloor(const MovingRegion& region) {
+  return kFloorVertices + kFloorVerticesPerHandle * closedGenus(region.topology());
 }
 
-int subdivideToWorkingResolution(TriMesh& mesh, std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
-  const int floor = workingResolutionFloor(mesh);
+void subdivideOneLevel(MovingRegion& region) {
+  region.edit([](TriMesh& mesh, std::vector<std::uint8_t>& selection) {
+    if (selection.empty())
+      subdivideMidpoint(mesh);
+    else
+      subdivideMidpointRegion(mesh, selection);
+    return true;
+  });
+}
+
+int subdivideToWorkingResolution(MovingRegion& region, const FlowOptions& opt) {
+  const int floor = workingResolutionFloor(region);
   int levels = 0;
-  while (levels < opt.subdivisionLevels && movingVertexCount(mesh, selection, opt.boundary) < floor &&
-         (opt.targetEdgeLength <= 0 ||
-          meanEdgeLength(Topology(mesh.vertexCount(), mesh.faces), mesh.positions) > opt.targetEdgeLength)) {
-    subdivideOneLevel(mesh, selection);
+  while (levels < opt.subdivisionLevels && region.roles().freeCount < floor &&
+         (opt.targetEdgeLength <= 0 || meanEdgeLength(region.topology(), region.mesh().positions) > opt.targetEdgeLength)) {
+    subdivideOneLevel(region);
     ++levels;
   }
   return levels;
 }
 
-bool needsRemeshing(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
-  return smallestMovingAngle(mesh, selection, mode) < kRemeshAngleDegrees ||
-         largestMovingCurvatureTimesEdge(mesh, selection, mode) > kRemeshCurvatureTimesEdge;
+bool needsRemeshing(const MovingRegion& region) {
+  return smallestMovingAngle(region) < kRemeshAngleDegrees || largestMovingCurvatureTimesEdge(region) > kRemeshCurvatureTimesEdge;
 }
 
-int movingVertexCount(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  return assignRoles(topo, &selection, mode).freeCount;
-}
-
-double smallestMovingAngle(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  return smallestAngleDegrees(mesh, movingFaces(mesh, assignRoles(topo, &selection, mode)));
+double smallestMovingAngle(const MovingRegion& region) {
+  return smallestAngleDegrees(region.mesh(), movingFaces(region.mesh(), region.roles()));
 }
 
 double largestCurvatureTimesEdge(const Topology& topo, const std::vector<Vec3>& positions, const std::vector<double>& H,
@@ -136,25 +141,23 @@ double largestCurvatureTimesEdge(const Topology& topo, const std::vector<Vec3>& 
   return largest;
 }
 
-double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& selection,
-                                       BoundaryMode mode) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  const MeshCurvature c = measureCurvature(mesh);
-  return largestCurvatureTimesEdge(topo, mesh.positions, c.H, c.K, assignRoles(topo, &selection, mode).free);
+double largestMovingCurvatureTimesEdge(const MovingRegion& region) {
+  const Curvature c = curvatureOf(region);
+  return largestCurvatureTimesEdge(region.topology(), region.mesh().positions, c.H, c.K, region.roles().free);
 }
 
-std::vector<double> largestPrincipalCurvature(const TriMesh& mesh) {
-  const MeshCurvature c = measureCurvature(mesh);
-  std::vector<double> kappa(mesh.positions.size(), 0);
+std::vector<double> largestPrincipalCurvature(const MovingRegion& region) {
+  const Curvature c = curvatureOf(region);
+  std::vector<double> kappa(region.mesh().positions.size(), 0);
   for (std::size_t v = 0; v < kappa.size(); ++v)
     kappa[v] = std::abs(c.H[v]) + std::sqrt(std::max(c.H[v] * c.H[v] - c.K[v], 0.0));
   return kappa;
 }
 
-bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, BoundaryMode mode,
-                        bool curvatureAdaptive, double coarsening) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  const VertexRoles roles = assignRoles(topo, &selection, mode);
+bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening) {
+  const TriMesh& mesh = moving.mesh();
+  const Topology& topo = moving.topology();
+  const VertexRoles& roles = moving.roles();
   std::vector<std::uint8_t> region = movingFaces(mesh, roles);
   // An equilateral triangle of the median face area (the mean would follow a refined neck down)
   // has edge sqrt(4A / √3).
@@ -178,7 +181,7 @@ bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, Bou
     // Where the surface bends within a few edges (a neck, a tight handle), the discrete energy
     // underestimates what bending costs: edges there are held to kMaxCurvatureTimesEdge / κ,
     // κ the largest principal curvature over the vertex's one-ring (so both sides of a neck agree).
-    const std::vector<double> kappa = largestPrincipalCurvature(mesh);
+    const std::vector<double> kappa = largestPrincipalCurvature(moving);
     for (int v = 0; v < topo.vertexCount(); ++v) {
       double k = kappa[v];
       for (int r = topo.ringBegin(v); r < topo.ringEnd(v); ++r) k = std::max(k, kappa[topo.ringVertex(r)]);
@@ -194,14 +197,16 @@ bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, Bou
 
   // Faces outside the region keep their slots (remeshRegion refills dead slots from the end only
   // while no face outside the region would move); region faces are selected.
-  if (!selection.empty()) {
-    std::vector<std::uint8_t> next(remeshed.faces.size(), 1);
-    for (std::size_t f = 0; f < next.size(); ++f)
-      if (!region[f]) next[f] = selection[f];
-    selection.swap(next);
-  }
-  mesh = std::move(remeshed);
-  return true;
+  return moving.edit([&](TriMesh& out, std::vector<std::uint8_t>& selection) {
+    if (!selection.empty()) {
+      std::vector<std::uint8_t> next(remeshed.faces.size(), 1);
+      for (std::size_t f = 0; f < next.size(); ++f)
+        if (!region[f]) next[f] = selection[f];
+      selection.swap(next);
+    }
+    out = std::move(remeshed);
+    return true;
+  });
 }
 
 }  // namespace elastica

@@ -13,6 +13,7 @@
 #include <elastica/flow.h>
 #include <elastica/topology.h>
 #include <elastica/types.h>
+#include "flow/moving_region.h"
 
 #include <cstdint>
 #include <vector>
@@ -21,7 +22,7 @@ namespace elastica {
 
 /// The genus of a closed mesh, from its Euler characteristic; 0 for a mesh with a border (a region
 /// with a border counts as a disk).
-int closedGenus(const TriMesh& mesh);
+int closedGenus(const Topology& topo);
 
 /// Free vertices the first flow stage wants: 100, plus 1,000 per handle (the genus from the Euler
 /// characteristic of a closed mesh; a region with a border counts as a disk). Below it, the
@@ -31,30 +32,28 @@ int closedGenus(const TriMesh& mesh);
 /// and semi-implicit schemes alike), and at --subdivide 2 the curvature-adaptive remeshing of the
 /// pinch ended at E 3,824 with crossing faces; subdivided first (1,536 and 6,144 vertices) it
 /// converged at E 78.6 and 78.9. The floor was 100 per handle plus 100 before.
-int workingResolutionFloor(const TriMesh& mesh);
+int workingResolutionFloor(const MovingRegion& region);
 
-/// One level of the coarse-to-fine refinement: the whole mesh 1-to-4 (`selection` empty), or only
-/// the selected faces, their neighbours split to stay conforming (subdivideMidpointRegion;
-/// `selection` follows).
-void subdivideOneLevel(TriMesh& mesh, std::vector<std::uint8_t>& selection);
+/// One level of the coarse-to-fine refinement: the whole mesh 1-to-4 (no selection), or only
+/// the selected faces, their neighbours split to stay conforming (subdivideMidpointRegion; the
+/// selection follows).
+void subdivideOneLevel(MovingRegion& region);
 
-/// Subdivides `mesh` (subdivideOneLevel) while fewer than workingResolutionFloor()
+/// Subdivides the region's mesh (subdivideOneLevel) while fewer than workingResolutionFloor()
 /// vertices move, at most opt.subdivisionLevels times and not below opt.targetEdgeLength.
 /// Returns the number of subdivisions made: the levels the schedule has used up.
-int subdivideToWorkingResolution(TriMesh& mesh, std::vector<std::uint8_t>& selection, const FlowOptions& opt);
+int subdivideToWorkingResolution(MovingRegion& region, const FlowOptions& opt);
 
 /// A flowed mesh the discrete operators no longer serve: an angle below 20° among the moving
 /// faces, or a moving vertex with κℓ > 0.6 (largestMovingCurvatureTimesEdge).
-bool needsRemeshing(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode);
-
-/// How many vertices would move (FlowState's free vertices) for this selection and boundary mode.
-int movingVertexCount(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode);
+bool needsRemeshing(const MovingRegion& region);
 
 /// Smallest corner angle, in degrees, of the faces whose three vertices all move (180 if none).
-double smallestMovingAngle(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, BoundaryMode mode);
+double smallestMovingAngle(const MovingRegion& region);
 
-/// The largest principal curvature |H| + √max(H² − K, 0) at each vertex (mixed areas).
-std::vector<double> largestPrincipalCurvature(const TriMesh& mesh);
+/// The largest principal curvature |H| + √max(H² − K, 0) at each vertex of the region's mesh
+/// (mixed areas: what measureCurvature() gives).
+std::vector<double> largestPrincipalCurvature(const MovingRegion& region);
 
 /// max over the `moving` vertices of κ·(mean length of the vertex's edges), κ = |H| + √max(H² − K, 0)
 /// from the given curvatures (what largestMovingCurvatureTimesEdge measures, on a flow's own caches).
@@ -63,8 +62,7 @@ double largestCurvatureTimesEdge(const Topology& topo, const std::vector<Vec3>& 
 
 /// max over moving vertices of κ · (mean length of its edges): above about 0.6 the discrete energy
 /// no longer sees what bending there costs (a neck can pinch for free).
-double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& selection,
-                                       BoundaryMode mode);
+double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 
 /// Isotropic remeshing (split, collapse, flip, tangential relaxation: mesh/patch_remeshing.h)
 /// of the faces whose three vertices all move, toward the edge length of an equilateral triangle
@@ -73,18 +71,17 @@ double largestMovingCurvatureTimesEdge(const TriMesh& mesh, const std::vector<st
 /// around the vertex; at most 8× shorter): a flowed surface's necks get the edges that let the
 /// energy see them. Not for an unflowed cage, whose curvature sits in its creases. Vertices that do not
 /// move, and every face touching one, keep their positions and values bit for bit; vertices are
-/// renumbered only where movable ones were removed. `selection` (one byte per face, or empty for
-/// the whole mesh) follows the faces. The remeshing is undone, and false returned, if it would
-/// make faces cross that did not cross before (mesh/self_intersection.h). `coarsening` multiplies
-/// the target edge length (a coarse start, coarseStartLevels: 2^k for k levels).
-bool remeshMovingRegion(TriMesh& mesh, std::vector<std::uint8_t>& selection, BoundaryMode mode,
-                        bool curvatureAdaptive, double coarsening = 1);
+/// renumbered only where movable ones were removed. The selection (if any) follows the faces. The
+/// remeshing is undone, and false returned, if it would make faces cross that did not cross before
+/// (mesh/self_intersection.h). `coarsening` multiplies the target edge length (a coarse start,
+/// coarseStartLevels: 2^k for k levels).
+bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1);
 
 /// Levels k of a coarse start for the whole-mesh fair of a large closed mesh: remeshed at 2^k times
 /// its edge length (a 4^k-th of its vertices, no fewer than kCoarseStartVertices) and flowed there,
 /// then subdivided k times back to its resolution, so that the many steps a shape change takes run
 /// on the small mesh and the full-size one flows only the last few. 0 for a mesh with a border, a
 /// selection, or fewer than 4 × kCoarseStartVertices vertices.
-int coarseStartLevels(const TriMesh& mesh, const std::vector<std::uint8_t>& selection);
+int coarseStartLevels(const MovingRegion& region);
 
 }  // namespace elastica

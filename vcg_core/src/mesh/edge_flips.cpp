@@ -1,5 +1,6 @@
 #include <elastica/topology.h>
 #include "mesh/edge_flips.h"
+#include "operators/corner_angle.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,11 +15,6 @@ namespace {
 
 // Flips beyond this much (radians) past π only: avoids flipping back and forth on cocircular quads.
 constexpr double kAngleSlack = 1e-6;
-
-double angleAt(const Vec3& apex, const Vec3& a, const Vec3& b) {
-  const Vec3 u = a - apex, w = b - apex;
-  return std::atan2(u.cross(w).norm(), u.dot(w));
-}
 
 // Whether the angles at c and d opposite edge (a, b) certainly sum to less than π: the sign of
 // sin(α + β) = sin α sin β (cot α + cot β), with a margin far above rounding. Most edges of a
@@ -118,7 +114,7 @@ int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
       const int d = t1[0] != a && t1[0] != b ? t1[0] : t1[1] != a && t1[1] != b ? t1[1] : t1[2];
       if (c == d || !allowed(a, b, c, d, f0, f1)) continue;
       if (clearlyDelaunay(p[a], p[b], p[c], p[d]) ||
-          angleAt(p[c], p[a], p[b]) + angleAt(p[d], p[a], p[b]) <= M_PI + kAngleSlack)
+          cornerAngle(p[c], p[a], p[b]) + cornerAngle(p[d], p[a], p[b]) <= M_PI + kAngleSlack)
         continue;
       // Edges this pass created count as existing too: two quads can share their far corners (on
       // a thin tube, c and d are both neighbours of a, b and of a', b'), and the second flip would

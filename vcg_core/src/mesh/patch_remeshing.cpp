@@ -1,6 +1,7 @@
 #include "mesh/patch_remeshing.h"
-#include "mesh/submesh.h"
 #include "support/parallel.h"
+
+#include <elastica/vertex_faces.h>
 
 #include <algorithm>
 #include <iterator>
@@ -30,7 +31,7 @@ class PatchEditor {
   PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
               std::vector<std::uint8_t>& movable, double lengthScale)
       : m_(mesh), patch_(patchFace), sigma_(sigma), movable_(movable), scale_(lengthScale), faceAlive_(mesh.faces.size(), 1),
-        vertexFaces_(vertexFaces(mesh)) {
+        vertexFaces_(faceListsOf(mesh)) {
     sigma_.resize(m_.positions.size(), 0);
     movable_.resize(m_.positions.size(), 0);
     int patchSoFar = 0;
@@ -346,7 +347,7 @@ class PatchEditor {
   std::vector<std::uint8_t>& movable_;
   double scale_;
   std::vector<std::uint8_t> faceAlive_;
-  std::vector<std::vector<int>> vertexFaces_;
+  std::vector<std::vector<int>> vertexFaces_;  // faceListsOf(): collapses and flips remove faces from them
   std::vector<Vec3> next_;  // relax()'s new positions, reused
   std::vector<int> ringOffset_, ringVertex_;  // relaxPasses()' neighbour lists (CSR)
   std::vector<Vec3> faceNormal_;              // relax()'s face normals at the pass's start

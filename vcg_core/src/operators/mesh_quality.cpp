@@ -1,4 +1,5 @@
 #include <elastica/mesh_quality.h>
+#include "operators/corner_angle.h"
 
 #include <algorithm>
 #include <array>
@@ -19,8 +20,7 @@ double smallestAngleDegrees(const Vec3& a, const Vec3& b, const Vec3& c) {
   const std::array<const Vec3*, 3> p{&a, &b, &c};
   double best = 180;
   for (int k = 0; k < 3; ++k) {
-    const Vec3 u = *p[(k + 1) % 3] - *p[k], w = *p[(k + 2) % 3] - *p[k];
-    best = std::min(best, std::atan2(u.cross(w).norm(), u.dot(w)) * 180 / M_PI);
+    best = std::min(best, cornerAngle(*p[k], *p[(k + 1) % 3], *p[(k + 2) % 3]) * 180 / M_PI);
   }
   return best;
 }

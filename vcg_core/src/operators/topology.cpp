@@ -1,5 +1,6 @@
 #include <elastica/errors.h>
 #include <elastica/topology.h>
+#include <elastica/vertex_fans.h>
 
 #include <algorithm>
 #include <atomic>
@@ -34,11 +35,6 @@ void sortSpokes(std::vector<Spoke>& spokes) {
     for (; j > 0 && spokes[j - 1] > s; --j) spokes[j] = spokes[j - 1];
     spokes[j] = s;
   }
-}
-
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
 }
 
 }  // namespace
@@ -91,14 +87,8 @@ void Topology::build(int vertexCount, const std::vector<Face>& faces) {
   }
   const int nc = 3 * nf;
 
-  // Corners of each vertex in increasing corner number (a stable counting sort).
-  cornerOffset_.assign(nv_ + 1, 0);
-  for (const Face& t : faces)
-    for (int v : t) ++cornerOffset_[v + 1];
-  std::partial_sum(cornerOffset_.begin(), cornerOffset_.end(), cornerOffset_.begin());
-  vertexCorner_.resize(nc);
-  std::vector<int> cursor(cornerOffset_.begin(), cornerOffset_.end() - 1);
-  for (int c = 0; c < nc; ++c) vertexCorner_[cursor[faces[c / 3][c % 3]]++] = c;
+  // Corners of each vertex in increasing corner number.
+  corners_.rebuild(nv_, faces);
 
   // Undirected edges numbered in (lo, hi) order: for each vertex lo, its spokes to larger
   // neighbours grouped by neighbour. The spokes come in face order and sort stably, so the two
@@ -115,8 +105,8 @@ void Topology::build(int vertexCount, const std::vector<Face>& faces) {
       // The faces around a vertex lie anywhere in the face array: each is asked for from the
       // cache kAhead corners before it is read, so the misses overlap.
       constexpr int kAhead = 16;
-      if (i + kAhead < nc) __builtin_prefetch(&faces[vertexCorner_[i + kAhead] / 3]);
-      const int c = vertexCorner_[i], f = c / 3, k = c % 3;
+      if (i + kAhead < nc) __builtin_prefetch(&faces[corner(i + kAhead) / 3]);
+      const int c = corner(i), f = c / 3, k = c % 3;
       // The edge to the next vertex of the face is opposite the previous corner, and vice versa.
       const int next = faces[f][(k + 1) % 3], prev = faces[f][(k + 2) % 3];
       if (next > lo) spokes.push_back(spoke(next, 3 * f + (k + 2) % 3));
@@ -161,7 +151,7 @@ void Topology::build(int vertexCount, const std::vector<Face>& faces) {
   std::partial_sum(ringOffset_.begin(), ringOffset_.end(), ringOffset_.begin());
   ringEdge_.resize(ringOffset_[nv_]);
   ringVertex_.resize(ringOffset_[nv_]);
-  cursor.assign(ringOffset_.begin(), ringOffset_.end() - 1);
+  std::vector<int> cursor(ringOffset_.begin(), ringOffset_.end() - 1);
   for (int e = 0; e < edgeCount(); ++e) {
     const int a = edgeVertices_[e][0], b = edgeVertices_[e][1];
     ringEdge_[cursor[a]] = e;
@@ -172,29 +162,12 @@ void Topology::build(int vertexCount, const std::vector<Face>& faces) {
 }
 
 int Topology::nonManifoldVertexCount() const {
-  // Fans around each vertex: faces sharing an edge at the vertex are joined; more than one fan
-  // means a bow-tie (non-manifold) vertex. Seen from the edges, each face joins its two edges at
-  // the vertex, so the fans are the components of the ring under those joins. The ring is sorted
-  // by neighbour, so a binary search finds an edge's place in it.
   int count = 0;
-  std::vector<int> parent;
+  std::vector<int> fan;
+  FanScratch scratch;
   for (int v = 0; v < nv_; ++v) {
-    if (cornerEnd(v) - cornerBegin(v) < 2) continue;
-    const int* ring = ringVertex_.data() + ringBegin(v);
-    const int n = valence(v);
-    auto place = [&](int x) { return static_cast<int>(std::lower_bound(ring, ring + n, x) - ring); };
-    parent.resize(n);
-    std::iota(parent.begin(), parent.end(), 0);
-    int fans = n;
-    for (int i = cornerBegin(v); i < cornerEnd(v); ++i) {
-      const int c = vertexCorner_[i], f = c / 3, k = c % 3;
-      const int a = findRoot(parent, place(faces_[f][(k + 1) % 3])), b = findRoot(parent, place(faces_[f][(k + 2) % 3]));
-      if (a != b) {
-        parent[a] = b;
-        --fans;
-      }
-    }
-    if (fans > 1) ++count;
+    const VertexFaces::CornerRange corners = corners_.corners(v);
+    if (corners.size() >= 2 && fansAt(faces_, corners.begin(), corners.size(), fan, scratch) > 1) ++count;
   }
   return count;
 }
@@ -202,7 +175,7 @@ int Topology::nonManifoldVertexCount() const {
 std::size_t Topology::byteSize() const {
   auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
   return bytes(faces_) + bytes(edgeVertices_) + bytes(edgeCorners_) + bytes(ringOffset_) + bytes(ringVertex_) +
-         bytes(ringEdge_) + bytes(cornerOffset_) + bytes(vertexCorner_) + bytes(boundaryVertex_);
+         bytes(ringEdge_) + corners_.byteSize() + bytes(boundaryVertex_);
 }
 
 }  // namespace elastica

@@ -1,7 +1,9 @@
 #include "restoration/hole_boundary.h"
+#include "operators/corner_angle.h"
 
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
+#include <elastica/vertex_fans.h>
 
 #include <algorithm>
 #include <cmath>
@@ -94,13 +96,13 @@ struct FanEdge {
 // six times per vertex, took 12 ms of a 17 ms fill of a 20-edge hole in a 37,706-vertex scan.)
 // An edge of more than two faces throws.
 template <class Visit>
-void forEachHalfEdge(const TriMesh& mesh, const VertexFaceIndex& adjacency, Visit visit) {
+void forEachHalfEdge(const TriMesh& mesh, const VertexFaces& adjacency, Visit visit) {
   std::vector<int> faces, next, prev;  // around one vertex a: its faces (a, next, prev)
   for (int a = 0; a < mesh.vertexCount(); ++a) {
     faces.clear();
     next.clear();
     prev.clear();
-    for (int g : adjacency[a]) {
+    for (int g : adjacency.faces(a)) {
       const Face& t = mesh.faces[g];
       const int k = t[0] == a ? 0 : t[1] == a ? 1 : 2;
       faces.push_back(g);
@@ -125,7 +127,7 @@ void forEachHalfEdge(const TriMesh& mesh, const VertexFaceIndex& adjacency, Visi
 
 }  // namespace
 
-std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFaceIndex& adjacency) {
+std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFaces& adjacency) {
   std::vector<HoleHalfEdge> edges;
   forEachHalfEdge(mesh, adjacency, [&](const FanEdge& e) {
     if (e.count == 1) edges.push_back({e.b, e.a, e.c});  // the hole runs against the face
@@ -135,21 +137,19 @@ std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFac
 
 FillInputDefects countFillInputDefects(const TriMesh& mesh) {
   checkFaceIndices(mesh);
-  const VertexFaceIndex adjacency(mesh);
+  const VertexFaces adjacency(mesh.vertexCount(), mesh.faces);
   FillInputDefects d;
   forEachHalfEdge(mesh, adjacency, [&](const FanEdge& e) { d.inconsistentEdges += e.laterSameWay; });
   std::vector<int> fan;
-  std::vector<std::pair<int, int>> spokes;
+  FanScratch scratch;
   for (int v = 0; v < mesh.vertexCount(); ++v) {
-    const VertexFaceIndex::Range faces = adjacency[v];
-    if (faces.size() >= 2 && fansAt(mesh, faces.begin(), faces.size(), v, fan, spokes) > 1) ++d.nonManifoldVertices;
+    const VertexFaces::CornerRange corners = adjacency.corners(v);
+    if (corners.size() >= 2 && fansAt(mesh.faces, corners.begin(), corners.size(), fan, scratch) > 1) ++d.nonManifoldVertices;
   }
   return d;
 }
 
 namespace {
-
-double angleBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)); }
 
 // A loop's outline: centroid, unit mean normal (Newell's), radius (farthest vertex from the
 // centroid) and bounding box.
@@ -175,13 +175,13 @@ Outline outlineOf(const std::vector<Vec3>& positions, const HoleLoop& loop) {
 
 // The vertices of the piece of the mesh that holds `seed`, or nothing if it has more than `limit`
 // faces.
-std::optional<std::unordered_set<int>> pieceOf(const TriMesh& mesh, const VertexFaceIndex& adjacency, int seed, std::size_t limit) {
+std::optional<std::unordered_set<int>> pieceOf(const TriMesh& mesh, const VertexFaces& adjacency, int seed, std::size_t limit) {
   std::unordered_set<int> vertices{seed}, faces;
   std::vector<int> stack{seed};
   while (!stack.empty()) {
     const int v = stack.back();
     stack.pop_back();
-    for (int f : adjacency[v]) {
+    for (int f : adjacency.faces(v)) {
       if (!faces.insert(f).second) continue;
       if (faces.size() > limit) return std::nullopt;
       for (int x : mesh.faces[f])
@@ -211,7 +211,7 @@ double windingNumber(const std::vector<Vec3>& positions, const std::vector<int>&
   return turn / (2 * std::acos(-1.0));
 }
 
-std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<HoleLoop>& loops) {
+std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaces& adjacency, const std::vector<HoleLoop>& loops) {
   const int n = static_cast<int>(loops.size());
   std::vector<int> holeOf(n, -1);
   if (n < 2) return holeOf;
@@ -239,12 +239,12 @@ std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adja
   return holeOf;
 }
 
-double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v) {
+double cornerAngleSum(const TriMesh& mesh, VertexFaces::FaceRange faces, int v) {
   double sum = 0;
   for (int f : faces) {
     const Face& t = mesh.faces[f];
     const int j = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-    sum += angleBetween(mesh.positions[t[(j + 1) % 3]] - mesh.positions[v], mesh.positions[t[(j + 2) % 3]] - mesh.positions[v]);
+    sum += cornerAngle(mesh.positions[v], mesh.positions[t[(j + 1) % 3]], mesh.positions[t[(j + 2) % 3]]);
   }
   return sum;
 }

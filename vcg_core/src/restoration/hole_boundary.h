@@ -3,7 +3,7 @@
 #pragma once
 
 #include <elastica/topology.h>
-#include "mesh/submesh.h"
+#include <elastica/vertex_faces.h>
 
 #include <functional>
 #include <limits>
@@ -38,7 +38,7 @@ std::vector<HoleLoop> findHoleLoops(std::vector<HoleHalfEdge> edges);
 /// over the faces and without arrays of the mesh's size (a whole-mesh Topology of a scan of
 /// millions of vertices takes several times the mesh's memory).
 /// @throws InvalidInputError on an edge shared by more than two faces (the message names it).
-std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFaceIndex& adjacency);
+std::vector<HoleHalfEdge> boundaryHalfEdges(const TriMesh& mesh, const VertexFaces& adjacency);
 
 /// @throws InvalidInputError if a face of `mesh` uses a vertex outside [0, vertexCount()) or
 ///         repeats a vertex (the message names the face): what boundaryHalfEdges needs.
@@ -58,11 +58,11 @@ double windingNumber(const std::vector<Vec3>& positions, const std::vector<int>&
 /// hole is wide), or -1. A disc patch across such a hole would cross the island, and one across
 /// the island's own border would close the island onto itself. Costs in proportion to the loops
 /// and to the islands' faces.
-std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaceIndex& adjacency, const std::vector<HoleLoop>& loops);
+std::vector<int> islandsInHoles(const TriMesh& mesh, const VertexFaces& adjacency, const std::vector<HoleLoop>& loops);
 
 /// The angle, in radians, that `faces` (the faces around `v`, in `mesh`) span at `v`: the sum of
 /// their corner angles there.
-double cornerAngleSum(const TriMesh& mesh, VertexFaceIndex::Range faces, int v);
+double cornerAngleSum(const TriMesh& mesh, VertexFaces::FaceRange faces, int v);
 
 /// The largest smallest angle (radians) that patch faces at a border corner can have, in the
 /// corner's plane: the corner's angle `theta` lies between border edges of lengths `a` and `b`, and

@@ -1,6 +1,7 @@
 #include <elastica/errors.h>
 #include <elastica/hole_filling.h>
 #include <elastica/mesh_quality.h>
+#include <elastica/vertex_fans.h>
 #include "flow/fair_masked.h"
 #include "mesh/self_intersection.h"
 #include "restoration/biharmonic_embedding.h"
@@ -153,7 +154,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 // Mean length of the mesh edges at `v` (whose faces are `faces`): the density a patch must match
 // there. Summed over the neighbours in increasing order, as a Topology's one-ring lists them.
-double borderEdgeLength(const TriMesh& mesh, VertexFaceIndex::Range faces, int v) {
+double borderEdgeLength(const TriMesh& mesh, VertexFaces::FaceRange faces, int v) {
   std::vector<int> ring;
   for (int f : faces)
     for (int x : mesh.faces[f])
@@ -407,27 +408,29 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
 
 // Welds `removed` into `kept` (two copies of one point on a hole border) unless an edge would then
 // have more than two faces. `adjacency` follows.
-bool weldCopies(AppendedMesh& mesh, VertexFaceIndex& adjacency, int kept, int removed) {
+bool weldCopies(AppendedMesh& mesh, VertexFaces& adjacency, int kept, int removed) {
   auto facesOnEdge = [&](int a, int b) {
     int count = 0;
-    for (int f : adjacency[a]) {
+    for (int f : adjacency.faces(a)) {
       const Face& t = mesh.face(f);
       count += t[0] == b || t[1] == b || t[2] == b;
     }
     return count;
   };
-  for (int f : adjacency[removed]) {
+  for (int f : adjacency.faces(removed)) {
     for (int x : mesh.face(f)) {
       if (x == removed) continue;
       if (x == kept) return false;  // an edge between the copies: a face would lose its area
       if (facesOnEdge(kept, x) + facesOnEdge(removed, x) > 2) return false;
     }
   }
-  const std::vector<int> moved = adjacency[removed].copy();
-  std::vector<int>& keptFaces = adjacency.edit(kept);
-  for (int f : moved) {
-    for (int& x : mesh.face(f)) x = x == removed ? kept : x;
-    keptFaces.push_back(f);
+  // A corner keeps its number: the face's slot that held `removed` now holds `kept`.
+  const VertexFaces::CornerRange removedCorners = adjacency.corners(removed);
+  const std::vector<int> moved(removedCorners.begin(), removedCorners.end());
+  std::vector<int>& keptCorners = adjacency.edit(kept);
+  for (int c : moved) {
+    mesh.face(c / 3)[c % 3] = kept;
+    keptCorners.push_back(c);
   }
   adjacency.edit(removed).clear();
   return true;
@@ -436,9 +439,10 @@ bool weldCopies(AppendedMesh& mesh, VertexFaceIndex& adjacency, int kept, int re
 // The faces around `v` grouped into fans (faces joined across an edge at v), each in face order.
 std::vector<std::vector<int>> fansAround(const TriMesh& mesh, std::vector<int> faces, int v) {
   std::sort(faces.begin(), faces.end());
-  std::vector<int> fan;
-  std::vector<std::pair<int, int>> spokes;
-  std::vector<std::vector<int>> fans(fansAt(mesh, faces.data(), faces.size(), v, fan, spokes));
+  std::vector<int> corners, fan;
+  for (int f : faces) corners.push_back(cornerAt(f, mesh.faces[f], v));
+  FanScratch scratch;
+  std::vector<std::vector<int>> fans(fansAt(mesh.faces, corners.data(), corners.size(), fan, scratch));
   for (std::size_t i = 0; i < faces.size(); ++i) fans[fan[i]].push_back(faces[i]);
   return fans;
 }
@@ -518,10 +522,10 @@ void validate(const HoleFillOptions& opt) {
 // The fill proper, after the checks: welds rewire `output`'s faces in place (each face's value
 // before its first change goes to `weldedFaces`), patches are made aside and appended to `output`
 // at the end, once `index` (the faces around each vertex) is no longer needed.
-void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::vector<HoleHalfEdge> halfEdges,
+void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaces> index, std::vector<HoleHalfEdge> halfEdges,
                  const HoleFillOptions& opt, std::chrono::steady_clock::time_point start, HoleFillReport& report,
                  std::unordered_map<int, Face>& weldedFaces) {
-  VertexFaceIndex& adjacency = *index;
+  VertexFaces& adjacency = *index;
   AppendedMesh mesh(output);
   // What the patches need of the mesh as it was given, at each border vertex: the mean length of
   // its edges (the density to match) and the angle its faces span (the border's corner bound).
@@ -532,9 +536,9 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
   for (const HoleHalfEdge& h : halfEdges)
     for (int v : {h.from, h.to})
       if (border.find(v) == border.end())
-        border.emplace(v, BorderVertex{borderEdgeLength(output, adjacency[v], v), cornerAngleSum(output, adjacency[v], v)});
+        border.emplace(v, BorderVertex{borderEdgeLength(output, adjacency.faces(v), v), cornerAngleSum(output, adjacency.faces(v), v)});
   auto edgeExists = [&](int a, int b) {
-    for (int f : adjacency[a]) {
+    for (int f : adjacency.faces(a)) {
       const Face& t = mesh.face(f);
       if (t[0] == b || t[1] == b || t[2] == b) return true;
     }
@@ -545,7 +549,7 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
   std::vector<HoleLoop> loops;
   for (const HoleLoop& found : findHoleLoops(std::move(halfEdges))) {
     PinchSplit split = splitAtPinches(found, output.positions, [&](int kept, int removed) {
-      WeldRecord w{{kept, removed}, adjacency[removed].copy(), adjacency[kept].copy()};
+      WeldRecord w{{kept, removed}, adjacency.faces(removed).copy(), adjacency.faces(kept).copy()};
       for (const WeldRecord& earlier : welds)
         if (earlier.weld.kept == kept) w.keptFaces = earlier.keptFaces;
       for (int f : w.removedFaces) weldedFaces.emplace(f, output.faces[f]);
@@ -612,7 +616,7 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
     const int firstVertex = mesh.vertexCount(), firstFace = mesh.faceCount();
     for (const Face& t : *triangles) {
       mesh.faces.push_back(t);
-      for (int v : t) adjacency.edit(v).push_back(mesh.faceCount() - 1);
+      adjacency.addFace(mesh.faceCount() - 1, t);
     }
     hole.filled = true;
     if (opt.stopAfter != FillStage::Triangulation) {
@@ -641,12 +645,10 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
       }
       // The patch was rewired: renew the face lists of its border.
       for (int v : loop.vertices) {
-        auto& faces = adjacency.edit(v);
-        faces.erase(std::remove_if(faces.begin(), faces.end(), [&](int f) { return f >= firstFace; }), faces.end());
+        auto& corners = adjacency.edit(v);
+        corners.erase(std::remove_if(corners.begin(), corners.end(), [&](int c) { return c / 3 >= firstFace; }), corners.end());
       }
-      for (int f = firstFace; f < mesh.faceCount(); ++f) {
-        for (int v : mesh.face(f)) adjacency.edit(v).push_back(f);
-      }
+      for (int f = firstFace; f < mesh.faceCount(); ++f) adjacency.addFace(f, mesh.face(f));
     }
     hole.newVertices = mesh.vertexCount() - firstVertex;
     hole.newFaces = mesh.faceCount() - firstFace;
@@ -659,7 +661,7 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaceIndex> index, std::v
   // The faces at each kept copy, for settling the welds; then the index goes before the mesh
   // grows (so that it and the grown arrays are never held at once).
   std::map<int, std::vector<int>> keptFaces;
-  for (const WeldRecord& w : welds) keptFaces.emplace(w.weld.kept, adjacency[w.weld.kept].copy());
+  for (const WeldRecord& w : welds) keptFaces.emplace(w.weld.kept, adjacency.faces(w.weld.kept).copy());
   index.reset();
   border.clear();
   // One array at a time, each grown once to its exact size.
@@ -694,7 +696,7 @@ HoleFillReport fillHoles(TriMesh& output, const HoleFillOptions& opt) {
   const int originalVertices = output.vertexCount(), originalFaces = output.faceCount();
   HoleFillReport report;
   report.firstNewFace = originalFaces;
-  auto index = std::make_unique<VertexFaceIndex>(output);
+  auto index = std::make_unique<VertexFaces>(output.vertexCount(), output.faces);
   std::vector<HoleHalfEdge> halfEdges = boundaryHalfEdges(output, *index);
   if (halfEdges.empty()) {
     report.seconds = seconds(start);

@@ -1,5 +1,7 @@
 #include "restoration/patch_angles.h"
 
+#include <elastica/vertex_faces.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -39,10 +41,7 @@ class PatchAngles {
   PatchAngles(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
               double goodEnough, bool finishing)
       : m_(mesh), patch_(patchFace), sigma_(sigma), firstNew_(firstNew), goodEnough_(goodEnough), finishing_(finishing),
-        faces_(mesh.positions.size()) {
-    for (int f = 0; f < static_cast<int>(m_.faces.size()); ++f)
-      for (int v : m_.faces[f]) faces_[v].push_back(f);
-  }
+        faces_(faceListsOf(mesh)) {}
 
   // Each pass looks again only at what changed around since it last looked (the outcome of a move
   // or a flip depends on the positions of the vertices of its faces and of the faces across their
@@ -455,7 +454,7 @@ class PatchAngles {
   int firstNew_;
   double goodEnough_;  // vertices whose faces all have angles above this stay where they are
   bool finishing_;     // the last pass on a flowed patch: border apexes are searched finely
-  std::vector<std::vector<int>> faces_;
+  std::vector<std::vector<int>> faces_;  // faceListsOf(): flips and splits remove faces from them
   long long clock_ = 1;  // counts changes; everything starts as changed (stamp 1, looked at 0)
   std::vector<long long> stamp_, vLooked_, fLooked_;
 };
