@@ -57,7 +57,7 @@ for stage in triangulation refinement biharmonic; do
   run fill_$stage        fill "$root/data/bunny_flank_hole.ply" -o fill_$stage.ply --stop-after $stage
 done
 run fill_shape0          fill "$root/data/bunny_flank_hole.ply" -o fill_shape0.ply --shape-tol 0 --max-steps 100
-elephant=$(ls -d "${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}"/cgal-data-*/elephant-with-holes.off 2>/dev/null | head -n1 || true)
+elephant=$(ls -d "${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}"/cgal-data-*/meshes/elephant-with-holes.off 2>/dev/null | head -n1 || true)
 [[ -n "$elephant" ]] && run fill_elephant fill "$elephant" -o fill_elephant.ply
 run curvature            curvature "$root/data/bunny.ply" -o curvature.ply
 run curvature_paper      curvature "$root/data/bunny.ply" -o curvature_paper.ply --area barycentric --lambda-fix --ascii
