@@ -307,9 +307,12 @@ double largestCurvatureTimesEdge(FlowState& state) {
 // torus's hole closing at E 60 where no torus goes below 8π² ≈ 79), or τ fell to kStuckFactor of
 // that step for other refusals (a mesh distorted by a large change of shape). The caller remeshes
 // and flows again; report.stop says Stalled.
-// The neck's reference is κℓ at the stage's start, except in the run's first stage, where it is the
-// lowest κℓ so far (`firstStage`): the input's creases and limbs a few edges across (the elephant:
-// κℓ 1.8, rounded off to 1.1 in the first steps) say nothing about a neck. Against its start, the
+// The neck's reference is κℓ at the stage's start, except in the first stage of a run on a region
+// with handles, where it is the lowest κℓ so far (`firstStageWithHandles`): the input's creases and
+// limbs a few edges across (the elephant: κℓ 1.8, rounded off to 1.1 in the first steps) say nothing
+// about a neck. Only with handles: what it protects is a tunnel, and on genus 0 it cut the bull's
+// first stage at 12 steps (E 535), which left the descent to the next stage (268 attempts in all
+// in the sanitizer build, whose rounding differs; 141 in Release). Against its start, the
 // elephant's tunnels closed to pin-holes before the rule fired (κℓ 2.25), and the energy the flow
 // went on lowering was the mesh's: its output, E 143.8, rose to 187 and 270 under one and two Loop
 // subdivisions (bench/loop_energy.py). After a remeshing, the start is the reference: the remesher
@@ -318,7 +321,7 @@ double largestCurvatureTimesEdge(FlowState& state) {
 // The stuck rule is measured against T too: after a step far beyond T (τ grows ×2 per step), a
 // remeshed stage's first refusals read as stuck although τ was still thousands of times T.
 bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeTolerance, bool guardEmbedding,
-                 bool startAtShapeScale, bool firstStage, double& lastTau, TriMesh& best, double& bestEnergy,
+                 bool startAtShapeScale, bool firstStageWithHandles, double& lastTau, TriMesh& best, double& bestEnergy,
                  bool& neckFormed) {
   neckFormed = false;
   constexpr double kGrowVector = 2, kStuckFactor = 1e-4;
@@ -392,7 +395,7 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
     const double energy = state.energy();
     if (run.record(state, stage.level, energy)) return true;
     const double curvatureTimesEdge = largestCurvatureTimesEdge(state);
-    if (firstStage) neckReference = std::min(neckReference, curvatureTimesEdge);
+    if (firstStageWithHandles) neckReference = std::min(neckReference, curvatureTimesEdge);
     if (curvatureTimesEdge > std::max(kNeckCurvatureTimesEdge, kNeckGrowth * neckReference)) {
       // The energy from here on is the mesh's, not the surface's: this state is not kept.
       report.stop = StopReason::Stalled;
@@ -590,6 +593,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   // first would resample the surface and smooth it below its edge length, whatever the amount.
   // A large closed mesh starts coarse (coarseStartLevels): its levels are added to the schedule's.
   // A coarse remeshing that would make faces cross is undone; the mesh is remeshed at its own size.
+  const bool handles = closedGenus(region.topology()) > 0;  // vectorStage's neck rule in the first stage
   int coarseLevels =
       quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStartLevels(region) : 0;
   if (coarseLevels > 0 && !remeshMovingRegion(region, false, std::ldexp(1.0, coarseLevels)))
@@ -624,7 +628,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
         bool neckFormed = false;
         meshBound = !vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
                                  quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && reflows == 0,
-                                 report.stages.empty(), lastTau, best, bestEnergy, neckFormed);
+                                 report.stages.empty() && handles, lastTau, best, bestEnergy, neckFormed);
         // The stage's output is its lowest-energy state (before any neck formed).
         if (neckFormed || bestEnergy < state.energy())
           state = FlowState(best, state.selection(), stageOpt, internal, slider.get());
