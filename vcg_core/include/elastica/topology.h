@@ -54,8 +54,6 @@ class Topology {
   int cornerBegin(int v) const { return corners_.offset(v); }
   int cornerEnd(int v) const { return corners_.offset(v + 1); }
   int corner(int k) const { return corners_.corner(k); }
-  /// The vertex→face adjacency itself (corners in increasing order), for what takes one.
-  const VertexFaces& vertexFaces() const { return corners_; }
 
   /// A vertex on a boundary edge. Boundary vertices carry no interior curvature: the energy skips
   /// them and the flows keep them fixed (or slide them) by constraint.

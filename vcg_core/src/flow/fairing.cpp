@@ -476,8 +476,7 @@ class VectorReflows {
 // not counted: a cage's handles are drawn by a few vertices however finely it is subdivided, and
 // the semi-implicit scheme gets there sooner (the genus-2 and genus-3 block cages at --subdivide 3:
 // 622 and 801 attempts against the vector scheme's 734 and 1,748, at E 112.8 and 143.0).
-Scheme automaticScheme(const MovingRegion& region) {
-  const int genus = closedGenus(region.topology());
+Scheme automaticScheme(const MovingRegion& region, int genus) {
   if (genus == 0) return Scheme::Vector;
   const long long moving = region.roles().freeCount;
   return moving >= static_cast<long long>(kVectorVerticesPerHandle) * (genus + 1) ? Scheme::Vector
@@ -542,9 +541,11 @@ void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report)
 FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal) {
   // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
   FlowOptions opt = requested;
+  // The handles decide the automatic scheme and vectorStage's neck rule in the first stage.
+  const int genus = closedGenus(region.topology());
   // A fairing amount needs no scheme choice: its filter is linear (featureSizeStage).
   if (opt.scheme == Scheme::Automatic)
-    opt.scheme = opt.featureSize > 0 ? Scheme::Vector : automaticScheme(region);
+    opt.scheme = opt.featureSize > 0 ? Scheme::Vector : automaticScheme(region, genus);
   if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
   if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
   FlowReport report;
@@ -593,7 +594,6 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   // first would resample the surface and smooth it below its edge length, whatever the amount.
   // A large closed mesh starts coarse (coarseStartLevels): its levels are added to the schedule's.
   // A coarse remeshing that would make faces cross is undone; the mesh is remeshed at its own size.
-  const bool handles = closedGenus(region.topology()) > 0;  // vectorStage's neck rule in the first stage
   int coarseLevels =
       quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStartLevels(region) : 0;
   if (coarseLevels > 0 && !remeshMovingRegion(region, false, std::ldexp(1.0, coarseLevels)))
@@ -628,14 +628,15 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
         bool neckFormed = false;
         meshBound = !vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
                                  quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && reflows == 0,
-                                 report.stages.empty() && handles, lastTau, best, bestEnergy, neckFormed);
+                                 report.stages.empty() && genus > 0, lastTau, best, bestEnergy, neckFormed);
         // The stage's output is its lowest-energy state (before any neck formed).
         if (neckFormed || bestEnergy < state.energy())
           state = FlowState(best, state.selection(), stageOpt, internal, slider.get());
         // Scheme::Automatic falls back to the semi-implicit scheme where the vector one cannot take
         // its first step (the femur, a CAD-like bone with slivers: every step refused, then each
-        // remeshing grew the mesh and its energy).
-        if (requested.scheme == Scheme::Automatic && stage.steps == 0 && report.stages.empty()) {
+        // remeshing grew the mesh and its energy). Not when a limit, not the mesh, stopped it.
+        if (requested.scheme == Scheme::Automatic && stage.steps == 0 && report.stages.empty() &&
+            !run.limitReached()) {
           opt.scheme = report.scheme = Scheme::SemiImplicit;
           report.stop = StopReason::Converged;
           region = state.releaseRegion();
