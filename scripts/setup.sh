@@ -5,7 +5,7 @@
 #   scripts/setup.sh --check    only report what is missing (exit 1 if anything is)
 #
 # 1. Binary packages (apt-get) that the build, the tests and the MeshLab plugin need.
-# 2. Three real sample meshes from Debian's libcgal-demo package (downloaded, not installed).
+# 2. Real sample meshes from Debian's libcgal-demo package (downloaded, not installed; the list cgal_meshes).
 # 3. Debian's `meshlab` *source* package, the same version as the installed `meshlab` binary (so the
 #    plugin ABI matches), unpacked into a cache: it holds vcglib and MeshLab's plugin headers
 #    (src/common). And Debian 13 (trixie)'s `meshlab` source package (MeshLab 2022.02), for the
@@ -100,7 +100,7 @@ cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
 # (2,904 vertices), a dino (3,916), a bull (6,200) and a knotted tube, knot1 (3,200, genus 1).
 # The restoration tests and benchmarks use them. `apt-get download`
 # fetches the package file without installing it (24 MB; no root needed once apt's lists exist).
-cgal_meshes=(elephant.off elephant-with-holes.off bunny00.off armadillo.off refined_elephant.off cow.off dino.off bull.off knot1.off)
+cgal_meshes=(elephant.off elephant-with-holes.off bunny00.off armadillo.off refined_elephant.off cow.off dino.off bull.off knot1.off lion-head.off mannequin-devil.off)
 fetch_cgal_meshes() {
   local candidate dir work deb m complete=1
   candidate=$(apt-cache policy libcgal-demo 2>/dev/null | awk '/Candidate:/ {print $2}')
