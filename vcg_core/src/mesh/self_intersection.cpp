@@ -75,23 +75,40 @@ bool trianglesCross(const TriMesh& m, const Face& f, const Face& g) {
 // neither face in `only`; stops when visit returns true. Broad phase: a uniform grid of cells about
 // the mean face size, as (cell, face) entries sorted by cell; a pair is tested only in the first
 // cell both faces cover, so once.
+// With `only`, the grid holds only the faces whose box meets the flagged faces' bounding box (a
+// pair needs a flagged face, whose box it overlaps): a step that moved a small region of a large
+// scan sorts the region's neighbourhood, not the scan (the sort was 40 % of a region's step).
 template <class Visit>
 void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Visit visit) {
   const int nf = m.faceCount();
   if (nf < 2) return;
   std::vector<Box> boxes(nf);
+  for (int f = 0; f < nf; ++f) boxes[f] = boxOf(m, m.faces[f]);
+  std::vector<std::uint8_t> inGrid(nf, 1);
+  if (only) {
+    Box flagged{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+    for (int f = 0; f < nf; ++f)
+      if ((*only)[f]) {
+        flagged.lo = flagged.lo.cwiseMin(boxes[f].lo);
+        flagged.hi = flagged.hi.cwiseMax(boxes[f].hi);
+      }
+    for (int f = 0; f < nf; ++f) inGrid[f] = (*only)[f] || overlap(boxes[f], flagged);
+  }
   Box all{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
   double extentSum = 0;
+  int gridFaces = 0;
   for (int f = 0; f < nf; ++f) {
-    boxes[f] = boxOf(m, m.faces[f]);
+    if (!inGrid[f]) continue;
     all.lo = all.lo.cwiseMin(boxes[f].lo);
     all.hi = all.hi.cwiseMax(boxes[f].hi);
     extentSum += (boxes[f].hi - boxes[f].lo).maxCoeff();
+    ++gridFaces;
   }
+  if (gridFaces < 2) return;
   // Cells of about the mean box size (each face lands in a few cells, each cell holds a few
   // faces), and at most 2^20 cells per axis so that a cell's coordinates pack into one key.
   constexpr double kMaxCellsPerAxis = 1 << 20;
-  const double cell = std::max({extentSum / nf, (all.hi - all.lo).maxCoeff() / kMaxCellsPerAxis, 1e-300});
+  const double cell = std::max({extentSum / gridFaces, (all.hi - all.lo).maxCoeff() / kMaxCellsPerAxis, 1e-300});
   using Cell = std::array<std::int64_t, 3>;
   auto cellOf = [&](const Vec3& p) {
     Cell c;
@@ -108,6 +125,7 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
   std::vector<std::pair<std::uint64_t, int>> entries;
   entries.reserve(static_cast<std::size_t>(nf) * 4);
   for (int f = 0; f < nf; ++f) {
+    if (!inGrid[f]) continue;
     lo[f] = cellOf(boxes[f].lo);
     hi[f] = cellOf(boxes[f].hi);
     const std::int64_t cells = (hi[f][0] - lo[f][0] + 1) * (hi[f][1] - lo[f][1] + 1) * (hi[f][2] - lo[f][2] + 1);
@@ -143,7 +161,7 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
   for (int f = 0; f < nf; ++f) {
     if (!large[f]) continue;
     for (int g = 0; g < nf; ++g)  // large–large pairs once, from the smaller index
-      if (g != f && !(large[g] && g < f) && test(f, g)) return;
+      if (g != f && inGrid[g] && !(large[g] && g < f) && test(f, g)) return;
   }
 }
 
