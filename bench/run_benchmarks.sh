@@ -109,7 +109,7 @@ Wall time of the flow until the energy is within 1 % of the converged energy E*,
 semi-implicit run's plateau, from the same start: the issue's criterion (E ≤ 1.01 E*), and
 E − E* ≤ 1 % of E₀ − E* (99 % of the decrease), which is the meaningful one where the start is
 already within 1 % of E*. Explicit: the paper's step (τ = A_min²/150, energy checked every 100
-steps), limited to ${explicit_seconds} s or 2,000,000 steps (fair's default step limit), whichever comes
+steps), limited to ${explicit_seconds} s or 2,000,000 steps (fair's default step limit when these tables were made), whichever comes
 first; semi-implicit: adaptive τ to its plateau, without remeshing (the two integrators on the same
 mesh; section 5 has the default pipeline). The torus is the
 issue's (R/r = 3, 48×16 = 768 vertices, every vertex free); the restoration times the flow stage of

@@ -89,7 +89,18 @@ void runFair(FairArgs& a) {
   std::printf("flow %s, scheme %s: %lld steps in %.2f s (%s), %zu stage%s\n", app::nameOf(flow.flow),
               app::nameOf(report.scheme), report.steps, report.seconds,
               app::nameOf(report.stop), report.stages.size(), report.stages.size() == 1 ? "" : "s");
-  std::printf("energy %.9g -> %.9g\n", result.energyInput, result.energyOutput);
+  if (!report.refusedBecause.empty()) {
+    if (report.keptStage < 0)
+      std::printf("warning: the flow's last state was not kept (%s): the mesh is unchanged\n",
+                  report.refusedBecause.c_str());
+    else
+      std::printf("warning: the flow's last state was not kept (%s): the mesh is the state at the end of stage %d of %zu\n",
+                  report.refusedBecause.c_str(), report.keptStage + 1, report.stages.size());
+  }
+  if (!report.regionFaces.empty())
+    std::printf("region energy %.9g -> %.9g (the selected faces' vertices, fixed rings included)\n",
+                report.regionEnergyBefore, report.regionEnergyAfter);
+  std::printf("mesh energy %.9g -> %.9g (the whole mesh)\n", result.meshEnergyBefore, result.meshEnergyAfter);
   if (!result.flowEnergyLine.empty()) std::printf("%s\n", result.flowEnergyLine.c_str());
   std::printf("wrote %s\n", a.output.c_str());
 

@@ -135,17 +135,20 @@ std::optional<FaceSet> selectionFrom(const py::object& selected, int faceCount) 
 }
 
 // progress(dict) -> bool on the flow's checks, with the GIL held for the call. A Python exception
-// in the callback cancels the run and is raised once the core has unwound.
+// in the callback cancels the run and is raised once the core has unwound. Every check also runs
+// Python's signal handlers, with or without a callback: Ctrl-C (SIGINT) raises KeyboardInterrupt
+// from its handler, which cancels the run the same way, and the input arrays are never written.
 struct PythonProgress {
   py::object callback;
   std::exception_ptr error;
-  bool cancelled = false;  ///< the callback returned False (or raised)
+  bool cancelled = false;  ///< the callback returned False (or raised), or a signal handler raised
 
   std::function<bool(const FlowProgress&)> hook() {
-    if (callback.is_none()) return {};
     return [this](const FlowProgress& p) {
       py::gil_scoped_acquire gil;
       try {
+        if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+        if (callback.is_none()) return true;
         py::dict d;
         d["level"] = p.level;
         d["step"] = p.step;

@@ -32,7 +32,7 @@ TEST(Choices, EveryEnumeratorHasOneNamedEntry) {
   expectComplete({FillStage::Triangulation, FillStage::Refinement, FillStage::Biharmonic, FillStage::Flow});
   expectComplete({StopReason::Converged, StopReason::Stalled, StopReason::MaxSteps, StopReason::MaxSeconds,
                   StopReason::Cancelled, StopReason::Diverged, StopReason::Shrunk, StopReason::SelfContact,
-                  StopReason::FeatureSize});
+                  StopReason::FeatureSize, StopReason::Unchanged});
 }
 
 // .mlx scripts store a RichEnum as its index: the menus' order is fixed forever.

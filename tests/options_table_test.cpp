@@ -143,10 +143,6 @@ TEST(OptionsTable, DefaultsAreTheCoresButTheDialogsBounds) {
     for (const ParamSpec& p : filterSpec(id, {}).params) {
       SCOPED_TRACE(p.field);
       const std::string& n = p.name;
-      if (n == "maxSteps") {
-        EXPECT_EQ(p.defaultValue, 0);  // no step limit in a dialog: the time limit bounds a run
-        continue;
-      }
       if (n == "maxSeconds") {
         EXPECT_EQ(p.defaultValue, 60);
         continue;

@@ -2,6 +2,7 @@
 // (scripts/setup.sh fetches them): four-legged animals and a knotted tube. Genus 0 must end as a
 // round sphere with a true "converged"; a knotted torus cannot become a Clifford torus without
 // passing through itself, so it must end without crossing and say why it stopped.
+#include "sample_meshes.h"
 #include "self_intersections.h"
 #include "shape_measures.h"
 
@@ -19,11 +20,7 @@
 namespace elastica {
 namespace {
 
-TriMesh readSample(const std::string& name) {
-  VcgMesh vm;
-  io::readMesh(std::string(ELASTICA_SAMPLE_MESH_DIR) + "/" + name, vm);
-  return toTriMesh(vm);
-}
+using test::readSample;
 
 int genus(const TriMesh& m) { return (2 - Topology(m.vertexCount(), m.faces).eulerCharacteristic()) / 2; }
 

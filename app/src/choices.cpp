@@ -60,7 +60,8 @@ const std::vector<Choice<StopReason>>& choices<StopReason>() {
       {StopReason::Diverged, "diverged", "diverged"},
       {StopReason::Shrunk, "shrunk", "stopped: the flow shrinks the surface (the comparison flows do)"},
       {StopReason::SelfContact, "self_contact", "stopped: going on would make the surface cross itself"},
-      {StopReason::FeatureSize, "feature_size", "faired to the feature size"}};
+      {StopReason::FeatureSize, "feature_size", "faired to the feature size"},
+      {StopReason::Unchanged, "unchanged", "unchanged: no state of the flow improved the region without breaking the mesh"}};
   return t;
 }
 

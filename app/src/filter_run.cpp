@@ -128,7 +128,7 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   const std::vector<Face> inputFaces = mesh.faces;
   const int inVertices = mesh.vertexCount();
   const CurvatureMeasureOptions measure{opt.area, opt.curvature};
-  r.energyInput = measureCurvature(mesh, measure).energy;
+  r.meshEnergyBefore = measureCurvature(mesh, measure).energy;
   r.report = selected ? fair(mesh, *region, opt) : fair(mesh, opt);
   const FlowReport& report = r.report;
   if (report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
@@ -136,16 +136,25 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   r.connectivityChanged = mesh.faces != inputFaces;
   r.outputCurvature = outputCurvature;
   if (outputCurvature) r.curvature = measureCurvature(mesh, measure);
-  r.energyOutput = outputCurvature ? r.curvature.energy : measureCurvature(mesh, measure).energy;
+  r.meshEnergyAfter = outputCurvature ? r.curvature.energy : measureCurvature(mesh, measure).energy;
   r.log.push_back({Severity::Info, std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) +
                                        " vertices, " + std::to_string(report.steps) + " steps in " +
                                        number(report.seconds, "%.2f") + " s (" + labelOf(report.stop) + ")"});
-  r.log.push_back({Severity::Info, "total curvature energy " + number(r.energyInput, "%.9g") + " -> " +
-                                       number(r.energyOutput, "%.9g")});
+  if (!report.refusedBecause.empty())
+    r.log.push_back({Severity::Warning, "the flow's last state was not kept (" + report.refusedBecause + "): " +
+                                            (report.keptStage < 0 ? std::string("the mesh is unchanged")
+                                                                  : "the mesh is the state at the end of stage " +
+                                                                        std::to_string(report.keptStage + 1) + " of " +
+                                                                        std::to_string(report.stages.size()))});
+  if (selected)
+    r.log.push_back({Severity::Info, "region energy " + number(report.regionEnergyBefore, "%.9g") + " -> " +
+                                         number(report.regionEnergyAfter, "%.9g") +
+                                         " (the selected faces' vertices, fixed rings included)"});
+  r.log.push_back({Severity::Info, "total curvature energy " + number(r.meshEnergyBefore, "%.9g") + " -> " +
+                                       number(r.meshEnergyAfter, "%.9g") + " (the whole mesh)"});
   // The flow's own start differs when it refined or remeshed the mesh first, or faired a region.
-  if (std::abs(report.energyInitial - r.energyInput) > 1e-9 * std::abs(r.energyInput)) {
-    r.flowEnergyLine = std::string("the flow's energy, ") +
-                       (selected ? "over the region that moves" : "on its working mesh") +
+  if (!selected && std::abs(report.energyInitial - r.meshEnergyBefore) > 1e-9 * std::abs(r.meshEnergyBefore)) {
+    r.flowEnergyLine = std::string("the flow's energy on its working mesh") +
                        (report.preSubdivisions + report.remeshings > 0 ? " after refinement or remeshing" : "") +
                        ": " + number(report.energyInitial, "%.9g") + " -> " + number(report.energyFinal, "%.9g");
     r.log.push_back({Severity::Info, r.flowEnergyLine});

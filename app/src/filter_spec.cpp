@@ -121,7 +121,7 @@ std::vector<ParamSpec> flowRows(const std::string& prefix, Flow flow) {
     const long long n = flow(j).maxSteps;
     return n == std::numeric_limits<long long>::max() ? 0.0 : double(n);
   };
-  steps.defaultValue = 0;  // the dialogs: no step limit (the time limit bounds a run)
+  steps.defaultValue = steps.get(JobOptions{});  // the core's: no limit, 0 on every face
   rows.push_back(steps);
   ParamSpec seconds = numberRow(
       ParamType::Float, prefix + "maxSeconds", {"maxSeconds", "--max-seconds", "max_seconds", "max_seconds"},

@@ -7,6 +7,14 @@ nlohmann::json toJson(const FlowReport& r) {
   nlohmann::json j;
   j["energy_initial"] = r.energyInitial;
   j["energy_final"] = r.energyFinal;
+  if (!r.regionFaces.empty() || r.stop == StopReason::Unchanged) {
+    j["region_energy_before"] = r.regionEnergyBefore;
+    j["region_energy_after"] = r.regionEnergyAfter;
+  }
+  if (!r.refusedBecause.empty()) {
+    j["refused_because"] = r.refusedBecause;
+    j["kept_stage"] = r.keptStage;
+  }
   j["steps"] = r.steps;
   j["rejected_steps"] = r.rejectedSteps;
   j["mesh_quality"] = {{"pre_subdivisions", r.preSubdivisions},
@@ -58,8 +66,8 @@ nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int in
   if (opt.featureSize > 0) j["feature_size"] = opt.featureSize;  // the length (the CLI's fraction × diagonal)
   if (result) {
     j["output"] = {{"vertices", result->mesh.vertexCount()}, {"faces", result->mesh.faceCount()}};
-    j["energy_input"] = result->energyInput;
-    j["energy_output"] = result->energyOutput;
+    j["mesh_energy_before"] = result->meshEnergyBefore;
+    j["mesh_energy_after"] = result->meshEnergyAfter;
   }
   return j;
 }

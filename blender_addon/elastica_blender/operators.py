@@ -5,8 +5,8 @@ no names or numbers of its own.
 Run from the menu or F3 (invoke), fairing and filling compute in a worker thread while Blender stays
 responsive: the status bar shows the step and energy, Esc cancels (the module's progress callback
 returns False) and leaves the mesh as it was. The time limit ("Time limit (s)", 60 s by default as in
-MeshLab) stops a long fair and leaves the mesh as it was too (a Blender operator finishes or changes
-nothing; raise the limit, or 0 for none); a fill stopped by it keeps the patches it made. From the
+MeshLab) stops a long fair and keeps the state reached, as every face does, and says so (undo
+restores the mesh; raise the limit, or 0 for none); a fill stopped by it keeps the patches it made. From the
 redo panel or a script (execute) they run to the end in the foreground.
 
 Edit Mode: the operator leaves Edit Mode once at its start and enters it again once at its end (a
@@ -289,9 +289,9 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
 
     def apply(self, context, me, result):
         V, F, report = result
-        if report["stop"] == "max_seconds":
-            return (f"Elastica: stopped at the time limit after {report['seconds']:.2f} s, before the flow "
-                    "finished; the mesh is unchanged (raise Time limit (s), or 0 for none)")
+        if report["stop"] == "unchanged":
+            return (f"Elastica: the flow's result was not kept ({report.get('refused_because', '')}); "
+                    "the mesh is unchanged")
         keep, arrays = self._keep, self._arrays
         if keep:
             ma.write_positions(me, V)
@@ -300,9 +300,15 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
         if self.color_by_mean_curvature:
             measure_curvature(me, V, F)
         moved = len(V) if not keep else int((V != arrays.V).any(axis=1).sum())
-        return (f"Elastica: {moved} of {len(V)} vertices moved; E {report['energy_initial']:.6g} -> "
-                f"{report['energy_final']:.6g} in {report['steps']} steps ({report['stop']}), "
-                f"{report['seconds']:.2f} s")
+        energies = f"mesh E {report['mesh_energy_before']:.6g} -> {report['mesh_energy_after']:.6g}"
+        if "region_energy_before" in report:
+            energies = (f"region E {report['region_energy_before']:.6g} -> {report['region_energy_after']:.6g}, "
+                        + energies)
+        limit = ""
+        if report["stop"] == "max_seconds":  # the state reached is kept, as on every face; undo restores
+            limit = " at the time limit (the state reached; raise Time limit (s), or 0 for none)"
+        return (f"Elastica: {moved} of {len(V)} vertices moved; {energies} in {report['steps']} steps "
+                f"({report['stop']}){limit}, {report['seconds']:.2f} s")
 
 
 class MESH_OT_elastica_fill_holes_base(ElasticaOperator):

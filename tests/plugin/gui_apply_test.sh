@@ -108,7 +108,7 @@ for p in red quality; do expect_no_property $p; done
 "$elastica" fill "$data/bunny_flank_hole.ply" -o "$artefacts/bunny_flat_patch.ply" --stop-after refinement >/dev/null
 case=fairing_selected; run_case fairing_selected "$artefacts/bunny_flat_patch.ply" "Discrete Elastica Fairing"
 expect_log "Discrete Elastica Fairing: total curvature energy "
-expect_log "Discrete Elastica Fairing: the flow's energy, over the region that moves"
+expect_log "Discrete Elastica Fairing: region energy [-0-9.e+]* -> [-0-9.e+]* (the selected faces' vertices"
 
 # Filling the bunny's flank hole: faces appended, the new ones selected, no colour or quality.
 case=fill; run_case fill "$data/bunny_flank_hole.ply" "Fill Holes with Discrete Elastica"

@@ -44,9 +44,19 @@ FlowReport fair(TriMesh& mesh, const FlowOptions& opt = {});
 /// it are split to keep the mesh conforming (subdivideMidpointRegion); every other face keeps its
 /// index and vertices. FlowReport::regionFaces lists the region's faces in the output mesh.
 ///
+/// The output is checked against the input before it is returned: a manifold mesh (nothing
+/// beyond the input's own defects), no two vertices of the region's faces or their neighbours at
+/// one point and no more faces crossing there than in the input, every face off the region as it
+/// was bit for bit, and the region's energy (FlowReport::regionEnergyBefore / After: its faces'
+/// vertices, each mesh at its own resolution) not above its start. An output that fails is not
+/// returned (FlowReport::refusedBecause says what failed): the last stage end of the schedule that
+/// passed comes back instead (FlowReport::keptStage), or if none did, the mesh unchanged with
+/// StopReason::Unchanged. A time or step limit keeps the state reached if it passes.
+///
 /// @throws InvalidInputError as the whole-mesh fair(), and if an index of `region` is not a face
 ///         of `mesh` or the region leaves no vertex free to move; the mesh is then unchanged.
-/// @throws FlowDivergedError as the whole-mesh fair().
+/// @throws FlowDivergedError as the whole-mesh fair(), but the mesh is then the last stage end that
+///         passed the checks, or the input.
 FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt = {});
 
 }  // namespace elastica

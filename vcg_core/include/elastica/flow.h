@@ -7,6 +7,7 @@
 #include <elastica/geometry.h>
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,11 @@ enum class StopReason {
   SelfContact,
   /// FlowOptions::featureSize: the flow ran for the time that damps ripples of that size.
   FeatureSize,
+  /// fair(mesh, region, …): no state the run reached passed the output checks (a manifold mesh, no
+  /// vertices at one point, no new crossing faces, the faces off the region bit for bit, the
+  /// region's energy not above its start); the input came back unchanged. FlowReport::refusedBecause
+  /// says what failed.
+  Unchanged,
 };
 
 /// Progress of a run, given to FlowOptions::progress.
@@ -123,7 +129,8 @@ struct FlowOptions {
   /// StopReason::FeatureSize (docs/options.md). Elastica and Laplacian-of-H flows. Default 0.
   double featureSize = 0;
 
-  long long maxSteps = 2'000'000;  ///< step limit over all stages; default 2,000,000
+  /// Step limit over all stages; default none (the largest count; every face shows it as 0).
+  long long maxSteps = std::numeric_limits<long long>::max();
   double maxSeconds = 0;           ///< wall-time limit (seconds; 0: none); default 0
   int checkInterval = 100;         ///< explicit: steps between energy-rate checks and checkpoints; default 100
 
@@ -181,6 +188,17 @@ struct FlowReport {
   /// fair(mesh, region, …): the region's faces in the output mesh, ascending (after subdivision,
   /// the children of its faces). Empty when the whole mesh was faired.
   std::vector<int> regionFaces;
+  /// fair(mesh, region, …): the energy Σ (4H² − 2K) A over the vertices of the region's faces (the
+  /// region and its fixed rings) in the input and in the output, each at its own resolution; the
+  /// after is never above the before. NaN when the whole mesh was faired.
+  double regionEnergyBefore = std::numeric_limits<double>::quiet_NaN();
+  double regionEnergyAfter = std::numeric_limits<double>::quiet_NaN();
+  /// fair(mesh, region, …): what the run's last state failed, in words (empty if it came back).
+  std::string refusedBecause;
+  /// fair(mesh, region, …) whose last state failed: the stage (0-based, FlowReport::stages) whose
+  /// end state came back instead, the last that passed; -1 with StopReason::Unchanged (none passed:
+  /// the input came back) and when the last state came back.
+  int keptStage = -1;
 };
 
 /// Thrown when a flow diverges; carries the report of the run up to the failure

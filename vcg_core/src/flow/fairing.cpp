@@ -6,6 +6,7 @@
 #include "flow/flow_state.h"
 #include "flow/mesh_quality_stage.h"
 #include "flow/principal_part_filter.h"
+#include "flow/region_guard.h"
 #include "flow/semi_implicit_integrator.h"
 #include "flow/vector_integrator.h"
 #include "mesh/self_intersection.h"
@@ -93,6 +94,7 @@ struct Run {
   const FlowOptions& opt;
   const InternalFlowOptions& internal;
   FlowReport& report;
+  const StageEnded& stageEnded;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   double time = 0;  // flow time
   // FlowOptions::featureSize's flow time 2 (featureSize / 2π)⁴, or none.
@@ -512,6 +514,7 @@ FlowStage beginStage(const FlowState& state, int level) {
 void endStage(FlowState& state, FlowStage& stage, double stageStart, Run& run, MovingRegion& region) {
   stage.energy = state.energy();
   region = state.releaseRegion();
+  if (run.stageEnded) run.stageEnded(region.mesh(), region.selection());
   stage.seconds = run.elapsed() - stageStart;
   run.report.stages.push_back(stage);
   run.report.energyFinal = stage.energy;
@@ -538,7 +541,8 @@ void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report)
 }
 
 // fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
-FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal) {
+FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal,
+                      const StageEnded& stageEnded) {
   // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
   FlowOptions opt = requested;
   // The handles decide the automatic scheme and vectorStage's neck rule in the first stage.
@@ -550,7 +554,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
   FlowReport report;
   report.scheme = opt.scheme;
-  Run run{opt, internal, report};
+  Run run{opt, internal, report, stageEnded};
 
   const std::size_t selected = region.selection().size();
   if (selected != 0 && selected != region.mesh().faces.size())
@@ -729,14 +733,14 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
 }  // namespace
 
 FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& requested,
-                      const InternalFlowOptions& internal) {
+                      const InternalFlowOptions& internal, const StageEnded& stageEnded) {
   validate(requested, internal);
   // The run works on a region that owns the mesh and the selection; the mesh goes back to the
   // caller as the run leaves it, on success and on failure alike (as when the run worked on the
   // caller's mesh in place).
   MovingRegion region(std::move(mesh), faceSelected ? *faceSelected : std::vector<std::uint8_t>{}, requested.boundary);
   try {
-    FlowReport report = fairRegion(region, requested, internal);
+    FlowReport report = fairRegion(region, requested, internal, stageEnded);
     if (faceSelected && !faceSelected->empty()) *faceSelected = region.selection();
     mesh = region.release();
     return report;
@@ -755,7 +759,40 @@ FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt) {
   } catch (const InvalidInputError& e) {
     throw InvalidInputError(std::string("fair: the region's ") + e.what());
   }
-  FlowReport report = fairMasked(mesh, &selection, opt, {});
+  validate(opt, {});
+  // A region of a scan is faired where the user wants the rest kept: whatever the run reached, the
+  // mesh that comes back passes the guard's checks. If the run's last state fails them, the last
+  // stage end that passed comes back, else the input (region_guard.h).
+  const RegionGuard guard(mesh, selection, opt);
+  struct Kept {
+    TriMesh mesh;
+    std::vector<std::uint8_t> selection;
+    double energy = 0;
+    int stage = 0;
+  };
+  Kept kept{mesh, selection, guard.energyBefore(), -1};
+  int stagesEnded = 0;
+  const StageEnded stageEnded = [&](const TriMesh& m, const std::vector<std::uint8_t>& s) {
+    double energy = 0;
+    if (guard.check(m, s, energy).empty()) kept = {m, s, energy, stagesEnded};
+    ++stagesEnded;
+  };
+  FlowReport report;
+  try {
+    report = fairMasked(mesh, &selection, opt, {}, stageEnded);
+  } catch (FlowDivergedError&) {
+    mesh = std::move(kept.mesh);  // a diverged run's last state is not kept either (the contract)
+    throw;
+  }
+  report.regionEnergyBefore = guard.energyBefore();
+  report.refusedBecause = guard.check(mesh, selection, report.regionEnergyAfter);
+  if (!report.refusedBecause.empty()) {
+    mesh = std::move(kept.mesh);
+    selection = std::move(kept.selection);
+    report.regionEnergyAfter = kept.energy;
+    report.keptStage = kept.stage;
+    if (kept.stage < 0) report.stop = StopReason::Unchanged;
+  }
   report.regionFaces = FaceSet::fromFlags(selection).faces;
   return report;
 }

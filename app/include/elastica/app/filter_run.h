@@ -72,9 +72,10 @@ struct FairingResult {
   bool outputCurvature = false;          ///< `curvature` holds the result's H and K
   MeshCurvature curvature;               ///< of the result, when outputCurvature
   /// The whole mesh's total curvature energy, of the input as given and of the result (as
-  /// `elastica curvature` measures them). report.energyInitial is the flow's own start: after any
-  /// refinement or remeshing, over the region that moves.
-  double energyInput = 0, energyOutput = 0;
+  /// `elastica curvature` measures them). The region's are report.regionEnergyBefore / After;
+  /// report.energyInitial is the flow's own start: after any refinement or remeshing, over the
+  /// vertices that move and their first fixed ring.
+  double meshEnergyBefore = 0, meshEnergyAfter = 0;
   FlowReport report;
   std::vector<LogLine> log;              ///< summary lines for the user
   /// The flow's own energies when its start differs from the input's (after refinement or

@@ -11,8 +11,11 @@
 
 namespace elastica::app {
 
-/// energy_initial, energy_final, steps, rejected_steps, seconds, stop, min_lambda, stages[],
-/// energy_history[].
+/// energy_initial, energy_final (the flow's own: over the vertices that move and their first fixed
+/// ring, on its working mesh), for a region's run region_energy_before, region_energy_after (the
+/// region's faces' vertices, input and output) and, if the run's last state was refused,
+/// refused_because and kept_stage (the stage whose end came back; -1: the input, stop unchanged);
+/// steps, rejected_steps, seconds, stop, min_lambda, stages[], energy_history[].
 nlohmann::json toJson(const FlowReport& r);
 
 /// One hole: border_edges, filled, reason, and if filled new_vertices, new_faces, energy_before,
@@ -21,8 +24,8 @@ nlohmann::json toJson(const FlowReport& r);
 nlohmann::json toJson(const HoleReport& h);
 
 /// A fairing run: the flow report, "flow", "input" {vertices, faces} and, for a finished run
-/// (`result` given), "output" {vertices, faces} and "energy_output" (the whole output mesh's E,
-/// recomputed independently of the flow) when the result carries its curvature.
+/// (`result` given), "output" {vertices, faces}, "mesh_energy_before" and "mesh_energy_after" (the
+/// whole mesh's E, input and output, measured as `elastica curvature` does, apart from the flow).
 nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int inputVertices, int inputFaces,
                              const FairingResult* result = nullptr);
 
