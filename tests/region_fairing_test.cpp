@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <random>
 #include <string>
@@ -43,10 +44,8 @@ struct Rng {
 
 double meanEdge(const TriMesh& m) { return meanEdgeLength(Topology(m.vertexCount(), m.faces), m.positions); }
 
-// The recipe: the faces whose centroid is within the `quantile` of the centroids'
-// distances to a random vertex.
-std::vector<int> seededRegion(const TriMesh& m, Rng& rng, double quantile) {
-  const Vec3 p = m.positions[static_cast<int>(rng.uniform() * m.vertexCount())];
+// The faces whose centroid is within the `quantile` of the centroids' distances to `p`.
+std::vector<int> regionAround(const TriMesh& m, const Vec3& p, double quantile) {
   std::vector<double> d(m.faces.size());
   for (std::size_t f = 0; f < d.size(); ++f) {
     const Face& t = m.faces[f];
@@ -59,6 +58,11 @@ std::vector<int> seededRegion(const TriMesh& m, Rng& rng, double quantile) {
   for (std::size_t f = 0; f < d.size(); ++f)
     if (d[f] <= sorted[k]) region.push_back(static_cast<int>(f));
   return region;
+}
+
+// The recipe: regionAround a random vertex.
+std::vector<int> seededRegion(const TriMesh& m, Rng& rng, double quantile) {
+  return regionAround(m, m.positions[static_cast<int>(rng.uniform() * m.vertexCount())], quantile);
 }
 
 // N(0, sigma) on every coordinate of the region's faces' vertices.
@@ -169,7 +173,9 @@ TEST(RegionFairing, NoisySphereCapReturnsToTheSphere) {
   double worst = 0;
   for (int f : rep.regionFaces)
     for (int v : m.faces[f]) worst = std::max(worst, std::abs(m.positions[v].norm() - r));
-  EXPECT_LT(worst, 0.1 * sigma);
+  // Measured 4.1e-5 (the noise's sigma 7.5e-3): the flow took off 99.5 % of it.
+  std::printf("cap: worst distance to the sphere %.3g (noise sigma %.3g)\n", worst, sigma);
+  EXPECT_LT(worst, 0.02 * sigma);
 }
 
 struct ScanRegions {
@@ -195,6 +201,24 @@ TEST_P(ScanRegionFairing, SeededRegionsNeverBreakTheMesh) {
     addNoise(noisy, region, 0.1 * edge, rng);
     expectRegionKept(noisy, region, opt, std::string(GetParam().mesh) + " noisy region " + std::to_string(i));
   }
+}
+
+// A region that reaches the scan's open border (around its first border vertex), noisy: the
+// border row and the next stay fixed, and the promises hold there too.
+TEST_P(ScanRegionFairing, RegionAtTheOpenBorder) {
+  const TriMesh scan = readSample(GetParam().mesh);
+  const Topology topo(scan.vertexCount(), scan.faces);
+  int border = -1;
+  for (int v = 0; v < scan.vertexCount() && border < 0; ++v)
+    if (topo.isBoundaryVertex(v)) border = v;
+  ASSERT_GE(border, 0) << "both scans are open";
+  const std::vector<int> region = regionAround(scan, scan.positions[border], 0.03);
+  Rng rng(11);
+  TriMesh noisy = scan;
+  addNoise(noisy, region, 0.1 * meanEdge(scan), rng);
+  FlowOptions opt;
+  opt.maxSteps = 200;
+  expectRegionKept(noisy, region, opt, std::string(GetParam().mesh) + " border region");
 }
 
 INSTANTIATE_TEST_SUITE_P(LibcgalDemo, ScanRegionFairing,

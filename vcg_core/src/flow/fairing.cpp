@@ -583,7 +583,10 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   int level = 0;
   if (quality) {
     level = report.preSubdivisions = subdivideToWorkingResolution(region, opt);
-    report.inputSelfIntersects = selfIntersects(region.mesh());
+    // A selection's guard asks about the faces that move: crossings elsewhere in a scan leave it on.
+    report.inputSelfIntersects = region.selection().empty()
+                                     ? selfIntersects(region.mesh())
+                                     : selfIntersects(region.mesh(), &region.roles().activeFace);
   }
   // A stage that leaves the mesh unfit for the operators (needsRemeshing) is remeshed and flowed
   // again, at most kMaxReflows times per level.
