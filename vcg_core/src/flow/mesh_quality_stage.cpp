@@ -186,14 +186,15 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
       if (!((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm() <= kMaxEdgeToTarget * target)) return false;
   }
 
-  // On a selection the crossing test is the region's (its faces against the mesh): a scan that
-  // crosses itself somewhere else (the devil mannequin does) must not let the region's remeshing
-  // cross (its first isotropic remeshing of a 777-face region took E 599 to 75,216 and every step
-  // after was refused). The whole mesh keeps the whole-mesh test: the cow crosses itself at 137
-  // faces, and its remeshings change which faces cross while the flow rounds it.
-  const bool local = !moving.selection().empty();
+  // A mesh that crossed itself before is judged on a selection by the region's crossings (its
+  // faces against the mesh): a scan that crosses itself somewhere else (the devil mannequin does)
+  // must not let the region's remeshing cross (its first isotropic remeshing of a 777-face region
+  // took E 599 to 75,216 and every step after was refused). The whole mesh is not judged then:
+  // the cow crosses itself at 137 faces, and its remeshings change which faces cross while the
+  // flow rounds it.
+  const bool crossedBefore = selfIntersects(mesh);
+  const bool local = crossedBefore && !moving.selection().empty();
   const std::size_t crossingBefore = local ? selfIntersectingFaces(mesh, &region).size() : 0;
-  const bool crossedBefore = local ? crossingBefore > 0 : selfIntersects(mesh);
   TriMesh remeshed = mesh;
   std::vector<std::uint8_t> movable = roles.free;
   std::vector<double> sigma(mesh.positions.size(), target);
