@@ -29,7 +29,7 @@ PACKAGES=(
   libtinyobjloader-dev                                 # OBJ reader (vcglib's is broken in this version)
   libgtest-dev libbenchmark-dev                        # tests and benchmarks
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev    # the MeshLab plugin and its integration tests
-  xvfb xauth                                           # headless MeshLab for the plugin tests
+  xvfb xauth x11-utils                                 # headless MeshLab for the plugin tests (scripts/with-xvfb.sh: Xvfb, xdpyinfo)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
   blender                                              # the Blender add-on's tests (blender_addon/; 690 MB with its libraries)
   clang                                                # libFuzzer targets (scripts/fuzz.sh)
