@@ -35,13 +35,13 @@ struct Scan {
 
 class RealShape : public ::testing::TestWithParam<Scan> {};
 
-// Attempts are the same bits on any thread count (support/parallel.h), but they follow every
-// rounding of the flow's arithmetic: one change of a reduction's grouping moved the cow from 96
-// to 136 and the dino from 160–179 to 203 (the bull stayed at 142). Measured with the fixed
-// reduction chunks: cow 136 (1 and 2 threads), dino 203 (1, 2 and 4 threads), bull 142 attempts,
-// each converged round. The bound is the genus-0 promise, 200 attempts, where the flow meets it;
-// the dino, at 203, is bounded at 250 until the flow's larger steps (issue "handles") bring it
-// under 200 with room.
+// Attempts are the same on any thread count and CPU (support/parallel.h, flow/spd_solver.h), but
+// they follow every rounding of the flow's arithmetic: regrouping one sum moved the dino from
+// 160–179 to 203 attempts, another factorisation's rounding the cow from 136 to 87. Measured with
+// the fixed reduction chunks and CHOLMOD's simplicial factorisation, at 1 and 2 threads alike:
+// cow 87, dino 198, bull 145 attempts, each converged round. The bound is the genus-0 promise,
+// 200 attempts, where the flow meets it with room; the dino, at 198, is bounded at 250 until the
+// flow's larger steps (issue "handles") bring it well under 200.
 TEST_P(RealShape, GenusZeroScanBecomesARoundSphere) {
   TriMesh m = readSample(GetParam().file);
   ASSERT_EQ(genus(m), 0);
