@@ -19,6 +19,9 @@
 #    script and input (same counts, positions within 1e-5 of the diagonal) and differs from the input.
 # 4. With --screenshot: MeshLab 2022.02's window under Xvfb, the faired sphere loaded and the menu
 #    Filters > Smoothing, Fairing and Deformation open, saved as OUT.png (the faired torus).
+# 5. The Load-Plugins file: the package removed again, the file loaded with Help > Plugin Info > Load
+#    Plugins in MeshLab's GUI (Xvfb), which copies it into its per-user folder; the fairing filter from
+#    that copy equals `elastica run` again.
 # Leaves $cache/meshlab2022/: the trixie .deb of the plugin (meshlab-plugin-elastica_*_amd64.deb),
 # the Load-Plugins file (libfilter_elastica.so with a note of its MeshLab version), the outputs.
 # Prints each step's time.
@@ -186,4 +189,19 @@ if [[ -n "$shot" ]]; then
   cp "$root/work/shot.png" "$shot"
   echo "screenshot: $shot"
 fi
+# ---------------------------------------------------------------- 5. the Load-Plugins file in MeshLab 2022.02
+step "the Load-Plugins file through MeshLab 2022.02's Help > Plugin Info > Load Plugins"
+# Without the package, MeshLab's plugin folder lacks ours: the filter can only come from the loaded copy.
+in_root apt-get remove -y -qq meshlab-plugin-elastica >/dev/null
+in_root test ! -e $plugins/libfilter_elastica.so || fail "the plugin is still in $plugins"
+cp "$src/packaging/meshlab2022/load_plugins.sh" "$out/libfilter_elastica.so" "$root/work/"
+rm -rf "$root/work/.local"
+run xvfb-run -a -s "-screen 0 1600x900x24" bash /work/load_plugins.sh /work/libfilter_elastica.so /work/load_plugins.png \
+  || fail "Load Plugins did not take the file"
+extra=$(cd "$root" && find work/.local -name libfilter_elastica.so -printf '/%h\n' | head -n1)
+[[ -n "$extra" ]] || fail "MeshLab did not copy the plugin into its extra-plugins folder"
+echo "MeshLab copied it into $extra"
+cp "$root/work/load_plugins.png" "$out/"
+run xvfb-run -a /build/run_filter/run_filter "$plugins:$extra" /work/noisy.ply /work/fair_loaded.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \
+  || fail "the fairing filter of the loaded plugin differs from elastica run (or did not run)"
 step "done"

@@ -2,10 +2,11 @@
 // applies it, without MeshLab's window (2022.02 has no meshlabserver). Built and run in the trixie root
 // by scripts/meshlab2022.sh.
 //
-//   run_filter PLUGIN_DIR IN OUT SCRIPT.mlx [REFERENCE TOLERANCE]
+//   run_filter PLUGIN_DIR[:PLUGIN_DIR...] IN OUT SCRIPT.mlx [REFERENCE TOLERANCE]
 //
-// - Loads every plugin of PLUGIN_DIR (MeshLab's plugin folder) with MeshLab's own PluginManager,
-//   which checks each plugin's MeshLab version and precision and throws on any it refuses.
+// - Loads every plugin of each PLUGIN_DIR (MeshLab's plugin folder, and its per-user folder of plugins
+//   added with Load Plugins) with MeshLab's own PluginManager, which checks each plugin's MeshLab
+//   version and precision and throws on any it refuses.
 // - Opens IN and saves OUT with MeshLab's I/O plugins (meshlab::loadMeshWithStandardParameters,
 //   saveMeshWithStandardParameters).
 // - Reads SCRIPT with MeshLab's FilterScript and applies each filter as MainWindow::runFilterScript
@@ -60,14 +61,15 @@ double distance(const CMeshO& a, const CMeshO& b) {
 
 int main(int argc, char** argv) {
   if (argc != 5 && argc != 7) {
-    std::fprintf(stderr, "usage: run_filter PLUGIN_DIR IN OUT SCRIPT.mlx [REFERENCE TOLERANCE]\n");
+    std::fprintf(stderr, "usage: run_filter PLUGIN_DIR[:PLUGIN_DIR...] IN OUT SCRIPT.mlx [REFERENCE TOLERANCE]\n");
     return 2;
   }
   QApplication app(argc, argv);
   try {
     std::printf("MeshLab %s (libmeshlab-common), plugins from %s\n", meshlab::meshlabVersion().c_str(), argv[1]);
     PluginManager& pm = meshlab::pluginManagerInstance();
-    pm.loadPlugins(QDir(QString::fromLocal8Bit(argv[1])));   // throws if MeshLab refuses any plugin there
+    for (const QString& dir : QString::fromLocal8Bit(argv[1]).split(':'))
+      pm.loadPlugins(QDir(dir));   // throws if MeshLab refuses any plugin there
 
     MeshDocument md;
     load(md, argv[2]);
