@@ -40,6 +40,13 @@ set(ELASTICA_DEB_MAINTAINER "${_name} <${_mail}>" CACHE STRING
 # The command.
 if(TARGET elastica)
   install(TARGETS elastica RUNTIME DESTINATION bin COMPONENT deb_cli EXCLUDE_FROM_ALL)
+  # Its manual page (a summary; `elastica COMMAND --help` has the options).
+  configure_file("${CMAKE_CURRENT_LIST_DIR}/elastica.1" "${PROJECT_BINARY_DIR}/packaging/elastica.1" COPYONLY)
+  execute_process(COMMAND gzip -9nf "${PROJECT_BINARY_DIR}/packaging/elastica.1" RESULT_VARIABLE _rc)
+  if(NOT _rc EQUAL 0)
+    message(FATAL_ERROR "gzip failed on packaging/elastica.1")
+  endif()
+  install(FILES "${PROJECT_BINARY_DIR}/packaging/elastica.1.gz" DESTINATION share/man/man1 COMPONENT deb_cli EXCLUDE_FROM_ALL)
   list(APPEND _components deb_cli)
 endif()
 # The MeshLab plugin, in the folder MeshLab looks in (MESHLAB_PLUGIN_INSTALL_DIR, under /usr).
