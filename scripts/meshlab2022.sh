@@ -75,7 +75,13 @@ mirror() {
 
 mounted=()
 cleanup() {
-  local m
+  local m p
+  # Whatever this run started in the root and left (an Xvfb of a failed xvfb-run): only processes whose
+  # root directory is the trixie root.
+  for p in /proc/[0-9]*; do
+    [[ "$(readlink "$p/root" 2>/dev/null)" == "$root" ]] && kill "${p#/proc/}" 2>/dev/null
+  done
+  sleep 0.5
   for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[i]}" 2>/dev/null || true; done
 }
 trap cleanup EXIT
