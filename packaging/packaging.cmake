@@ -6,7 +6,7 @@
 #   python3-elastica         the Python module for the system Python, /usr/lib/python3/dist-packages
 #   blender-addon-elastica   the Blender add-on, where Debian's Blender finds system add-ons
 #
-#   cd build && cpack        -> build/packages/*.deb   (scripts/build-packages.sh does this and lintian)
+#   cd build && cpack        -> build/packages/*.deb   (scripts/ci-packages.sh does this, runs lintian, installs and uses them)
 #
 # Each package is its own install component (deb_*), outside the default install: `cmake --install`
 # is unchanged. Dependencies on shared libraries come from dpkg-shlibdeps; the rest are written here.
