@@ -9,6 +9,10 @@
 # test's client then talks to the other suite's server, or to none ("could not connect to
 # display"). Here Xvfb binds a free display atomically (-displayfd) and tells us which, and the
 # command starts only once the server answers. Local clients only (-nolisten tcp).
+# -noreset: by default an X server resets whenever its last client disconnects, and a client that
+# connects during the reset is refused. The GUI tests start MeshLab once per case, after the
+# previous one (and xdotool, xdpyinfo) closed: MeshLab then failed now and then with "could not
+# connect to display" although the server had just answered.
 # Exits with the command's status; the server is stopped however the command ends.
 set -euo pipefail
 xvfb_args="-screen 0 1280x1024x24"
@@ -29,7 +33,7 @@ trap 'exit 130' INT TERM
 
 mkfifo "$work/displayfd"
 # shellcheck disable=SC2086  # the server's arguments are words on purpose
-Xvfb -displayfd 3 -nolisten tcp $xvfb_args 3>"$work/displayfd" >"$work/xvfb.log" 2>&1 &
+Xvfb -displayfd 3 -nolisten tcp -noreset $xvfb_args 3>"$work/displayfd" >"$work/xvfb.log" 2>&1 &
 xvfb_pid=$!
 display=
 read -r -t 30 display <"$work/displayfd" || true
