@@ -555,8 +555,15 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   } else if (opt.scheme == Scheme::Vector) {
     untangleMovingRegion(region, false, report);
   }
+  // The moving vertices this level may have (vertexBudget), ×4 per level; the report has the finest's.
+  long long movingBudget = 0;
+  if (quality) {
+    movingBudget = vertexBudget(region.roles().freeCount, genus);
+    const long long fixed = region.mesh().vertexCount() - region.roles().freeCount;
+    report.vertexBudget = fixed + movingBudget * (1LL << (2 * std::max(0, opt.subdivisionLevels - level)));
+  }
   for (;; ++level) {
-    if (remeshAdaptively && remeshMovingRegion(region, true)) ++report.remeshings;
+    if (remeshAdaptively && remeshMovingRegion(region, true, 1, movingBudget)) ++report.remeshings;
     remeshAdaptively = false;
     FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
     requireMovingVertex(state);
@@ -602,6 +609,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     const NextStage next = schedule.next({end, stage.steps, stage.energy}, context, report.stop);
     if (next == NextStage::Stop) break;
     if (next == NextStage::Refine) {
+      movingBudget *= 4;
       // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
       // midpoints' facets would be creases for the finer level to flow out.
       if (coarseLevels > 0)
