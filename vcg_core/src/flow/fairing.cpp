@@ -486,6 +486,22 @@ void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report)
   region.movePositions([&](TriMesh& mesh) { report.untanglePasses += untangle(mesh, roles.free, roles.activeFace); });
 }
 
+// The working resolution of a CAD tessellation whose isotropic remeshing was refused: its long
+// edges split first (splitLongEdges: no input vertex moves), then remeshed. The region is as it
+// came if either step is refused.
+bool remeshTessellation(MovingRegion& region) {
+  TriMesh mesh = region.mesh();
+  std::vector<std::uint8_t> selection = region.selection();
+  if (!splitLongEdges(region)) return false;
+  if (remeshMovingRegion(region, false)) return true;
+  region.edit([&](TriMesh& out, std::vector<std::uint8_t>& sel) {
+    out = std::move(mesh);
+    sel = std::move(selection);
+    return true;
+  });
+  return false;
+}
+
 // fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
 FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal) {
   // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
@@ -552,6 +568,13 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     report.coarseStartLevels = coarseLevels;
   } else if (quality && !run.timeLimited() && remeshMovingRegion(region, false)) {
     ++report.remeshings;
+  } else if (quality && !run.timeLimited() && remeshTessellation(region)) {
+    ++report.remeshings;
+    // A CAD part's flow starts from a fresh triangulation, not from a cage's few vertices that
+    // automaticScheme leaves to the semi-implicit scheme: the vector scheme's (joint, genus 2:
+    // semi-implicit stalled at E 134.5, vector converged at 112.3; docs/benchmarks.md).
+    if (requested.scheme == Scheme::Automatic && opt.flow == FlowType::Elastica)
+      opt.scheme = report.scheme = Scheme::Vector;
   } else if (opt.scheme == Scheme::Vector) {
     untangleMovingRegion(region, false, report);
   }

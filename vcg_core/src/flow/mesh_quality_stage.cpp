@@ -105,6 +105,22 @@ void fitTargets(const TriMesh& mesh, const std::vector<std::uint8_t>& region, st
   for (double& s : sigma) s = std::max(s, hi);
 }
 
+// Gives the region a rewritten mesh whose faces flagged in `region` replaced the moving faces:
+// faces outside keep their slots (remeshRegion refills dead slots from the end only while no face
+// outside the region would move); the rewritten faces are selected.
+bool adopt(MovingRegion& moving, TriMesh&& rewritten, const std::vector<std::uint8_t>& region) {
+  return moving.edit([&](TriMesh& out, std::vector<std::uint8_t>& selection) {
+    if (!selection.empty()) {
+      std::vector<std::uint8_t> next(rewritten.faces.size(), 1);
+      for (std::size_t f = 0; f < next.size(); ++f)
+        if (!region[f]) next[f] = selection[f];
+      selection.swap(next);
+    }
+    out = std::move(rewritten);
+    return true;
+  });
+}
+
 }  // namespace
 
 int closedGenus(const Topology& topo) {
@@ -188,6 +204,29 @@ std::vector<double> largestPrincipalCurvature(const MovingRegion& region) {
   return kappa;
 }
 
+bool splitLongEdges(MovingRegion& moving) {
+  const TriMesh& mesh = moving.mesh();
+  std::vector<std::uint8_t> region = movingFaces(mesh, moving.roles());
+  const double target = std::sqrt(4 * medianFaceArea(mesh, region) / std::sqrt(3.0));
+  if (!(target > 0)) return false;
+  for (int f = 0; f < mesh.faceCount(); ++f) {  // a vertex thrown far away (remeshMovingRegion)
+    if (!region[f]) continue;
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k)
+      if (!((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm() <= kMaxEdgeToTarget * target)) return false;
+  }
+  TriMesh split = mesh;
+  std::vector<std::uint8_t> none(mesh.positions.size(), 0);  // no vertex of the input moves
+  std::vector<double> sigma(mesh.positions.size(), target);
+  PatchRemeshingOptions options;
+  options.iterations = 1;
+  options.relaxPasses = 0;
+  remeshRegion(split, region, sigma, none, options);
+  if (split.vertexCount() == mesh.vertexCount()) return false;
+  if (!selfIntersects(mesh) && selfIntersects(split)) return false;
+  return adopt(moving, std::move(split), region);
+}
+
 long long vertexBudget(long long moving, int genus) {
   constexpr double kVerticesPerEnergy = 1 / (kTargetCurvatureTimesEdge * kTargetCurvatureTimesEdge * 0.8660254037844386);
   constexpr double kWidening = 4;
@@ -251,18 +290,7 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   region.swap(remeshedRegion);
   if (!crossedBefore && selfIntersects(remeshed)) return false;
 
-  // Faces outside the region keep their slots (remeshRegion refills dead slots from the end only
-  // while no face outside the region would move); region faces are selected.
-  return moving.edit([&](TriMesh& out, std::vector<std::uint8_t>& selection) {
-    if (!selection.empty()) {
-      std::vector<std::uint8_t> next(remeshed.faces.size(), 1);
-      for (std::size_t f = 0; f < next.size(); ++f)
-        if (!region[f]) next[f] = selection[f];
-      selection.swap(next);
-    }
-    out = std::move(remeshed);
-    return true;
-  });
+  return adopt(moving, std::move(remeshed), region);
 }
 
 }  // namespace elastica

@@ -80,6 +80,16 @@ double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 /// the most refined places, and splitting stops at the bound.
 bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1, long long maxMoving = 0);
 
+/// A CAD tessellation's long thin triangles, split toward the edge length of remeshMovingRegion's
+/// isotropic target (moving faces only, one pass without relaxation): no input vertex moves and
+/// new ones are made on its edges, so the surface changes only where the remesher's flips and
+/// collapses of new vertices re-form faces that turn little. The relaxation of an isotropic
+/// remeshing slides vertices over slivers a long way and can make faces cross (joint, a genus-2
+/// part of 221 vertices with corners under 0.5°; a washer of aspect-40 strips), and the remeshing
+/// is then refused; after the split its moves are short. False, with the region as it was, if
+/// nothing was split, an edge is a vertex thrown far away, or the split made faces cross.
+bool splitLongEdges(MovingRegion& region);
+
 /// The moving vertices a flow of genus `genus` needs at the current level: those it has now
 /// (`moving`) plus what curvature-adaptive remeshing of a fair shape adds. Edges of 0.4/κ put
 /// κ²/(0.4² · √3/2) ≈ 7.2 κ² vertices on a unit of area, and ∫κ² ≤ E, the energy, which a fair
