@@ -10,7 +10,7 @@
 //       on a torus R/r = 3 (→ Clifford torus) and on the bunny-flank restoration;
 //   flow_bench factorization [--levels 4,5,6,7]
 //       the semi-implicit system's numeric factorisation on icospheres, Eigen SimplicialLDLT
-//       against CHOLMOD supernodal (pattern analysed once, as in the flow);
+//       against CHOLMOD simplicial (pattern analysed once, as in the flow);
 //   flow_bench resolution [--tori 48,16,96,32,192,64] [--explicit-seconds S]
 //       the default pipeline (semi-implicit with remeshing) against the explicit scheme on tori
 //       R/r = 3 at several resolutions: steps, seconds, R/r, E.

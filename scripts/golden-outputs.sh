@@ -4,18 +4,21 @@
 # subdivide, .mlx scripts) on bundled and generated meshes, and writes each output mesh and the
 # command's stdout (timing lines removed) into OUTDIR, with a SHA256SUMS file.
 #
-#   scripts/golden-outputs.sh BUILD_BIN_DIR OUTDIR
+#   scripts/golden-outputs.sh BUILD_BIN_DIR OUTDIR [THREADS]
 #   diff before/SHA256SUMS after/SHA256SUMS     # byte-identical outputs: no difference
 #
-# Only step-bounded runs (no --max-seconds), on one thread (OMP_NUM_THREADS=1: a parallel sum's
-# order depends on the thread count), so two runs of the same code give the same bytes.
+# Only step-bounded runs (no --max-seconds), so two runs of the same code give the same bytes, on
+# THREADS OpenMP threads (default 1). The bytes must not depend on THREADS either:
+# scripts/same-output.sh runs this at 1 and 2 threads and compares.
 set -euo pipefail
-bin=${1:?usage: golden-outputs.sh BUILD_BIN_DIR OUTDIR}
-out=${2:?usage: golden-outputs.sh BUILD_BIN_DIR OUTDIR}
+usage="usage: golden-outputs.sh BUILD_BIN_DIR OUTDIR [THREADS]"
+bin=${1:?$usage}
+out=${2:?$usage}
+threads=${3:-1}
 root=$(cd "$(dirname "$0")/.." && pwd)
-exe="$bin/elastica"
+exe="$(cd "$bin" 2>/dev/null && pwd)/elastica"
 [[ -x "$exe" ]] || { echo "golden-outputs: no elastica in $bin" >&2; exit 1; }
-export OMP_NUM_THREADS=1
+export OMP_NUM_THREADS=$threads
 mkdir -p "$out"
 cd "$out"
 rm -f ./*.ply ./*.txt SHA256SUMS
@@ -59,6 +62,22 @@ done
 run fill_shape0          fill "$root/data/bunny_flank_hole.ply" -o fill_shape0.ply --shape-tol 0 --max-steps 100
 elephant=$(ls -d "${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}"/cgal-data-*/meshes/elephant-with-holes.off 2>/dev/null | head -n1 || true)
 [[ -n "$elephant" ]] && run fill_elephant fill "$elephant" -o fill_elephant.ply
+# Whole scans with the defaults (the dino's arrays pass parallel.h's grain once remeshed), the
+# elephant's handles for a bounded number of attempts, and a contiguous region of the cow.
+meshes=$(dirname "${elephant:-/nonexistent/x}")
+if [[ -f "$meshes/dino.off" ]]; then
+  run fair_dino          fair "$meshes/dino.off" -o fair_dino.ply
+  run fair_elephant      fair "$meshes/elephant.off" -o fair_elephant.ply --max-steps 150
+  seq 0 999 >cow_region.txt
+  run fair_cow_region    fair "$meshes/cow.off" -o fair_cow_region.ply --selected-faces cow_region.txt
+  rm -f cow_region.txt
+fi
+# Above parallel.h's grain from the start: 40,962 vertices, a few steps of each scheme.
+"$exe" generate icosphere --level 6 --noise 0.02 --seed 3 -o big.ply >/dev/null
+run fair_big_vector      fair big.ply -o fair_big_vector.ply --max-steps 4
+run fair_big_semi        fair big.ply -o fair_big_semi.ply --scheme semi-implicit --max-steps 4
+run fair_big_explicit    fair big.ply -o fair_big_explicit.ply --scheme explicit --max-steps 40
+rm -f big.ply
 run curvature            curvature "$root/data/bunny.ply" -o curvature.ply
 run curvature_paper      curvature "$root/data/bunny.ply" -o curvature_paper.ply --area barycentric --lambda-fix --ascii
 run subdivide            subdivide "$root/data/bunny.ply" -o subdivide.ply --levels 1

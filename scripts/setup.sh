@@ -25,11 +25,10 @@ PACKAGES=(
   build-essential cmake pkg-config dpkg-dev          # toolchain; dpkg-source unpacks the source package
   libeigen3-dev libcli11-dev nlohmann-json3-dev       # core numerics, CLI parsing, JSON reports
   libsuitesparse-dev                                   # CHOLMOD: large semi-implicit systems
-  libopenblas0-serial                                  # optimised BLAS for CHOLMOD's supernodes (serial: no extra threads)
   libtinyobjloader-dev                                 # OBJ reader (vcglib's is broken in this version)
   libgtest-dev libbenchmark-dev                        # tests and benchmarks
   meshlab qtbase5-dev libqt5opengl5-dev libglew-dev    # the MeshLab plugin and its integration tests
-  xvfb xauth                                           # headless MeshLab for the plugin tests
+  xvfb xauth x11-utils                                 # headless MeshLab for the plugin tests (scripts/with-xvfb.sh: Xvfb, xdpyinfo)
   pybind11-dev python3-dev python3-numpy python3-pytest  # the Python module (python/) and its tests
   blender                                              # the Blender add-on's tests (blender_addon/; 690 MB with its libraries)
   clang                                                # libFuzzer targets (scripts/fuzz.sh)

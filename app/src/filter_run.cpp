@@ -30,15 +30,19 @@ Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices) {
 
 long long stepLimit(long long steps) { return steps == 0 ? std::numeric_limits<long long>::max() : steps; }
 
-std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o) {
+std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o,
+                                                      const Clock& clock) {
   if (!progress) return {};
-  const auto start = std::chrono::steady_clock::now();
+  const Clock now = clock ? clock : [] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  };
+  const double start = now();
   auto shown = std::make_shared<double>(0.0);  // the fraction shown last: progress never goes back
   const double stages = double(std::max(o.subdivisionLevels, 0) + 1);
   const double maxSeconds = o.maxSeconds;
   const double maxSteps = double(o.maxSteps);
-  return [progress, start, shown, stages, maxSeconds, maxSteps](const FlowProgress& p) {
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return [progress, now, start, shown, stages, maxSeconds, maxSteps](const FlowProgress& p) {
+    const double seconds = now() - start;
     double f = double(p.level) / stages;
     if (maxSeconds > 0) f = std::max(f, seconds / maxSeconds);
     if (maxSteps > 0 && maxSteps < 1e18) f = std::max(f, double(p.step) / maxSteps);

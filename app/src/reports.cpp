@@ -20,6 +20,7 @@ nlohmann::json toJson(const FlowReport& r) {
   j["mesh_quality"] = {{"pre_subdivisions", r.preSubdivisions},
                        {"remeshings", r.remeshings},
                        {"coarse_start_levels", r.coarseStartLevels},
+                       {"vertex_budget", r.vertexBudget},
                        {"untangle_passes", r.untanglePasses},
                        {"crossing_rejections", r.crossingRejections},
                        {"input_self_intersects", r.inputSelfIntersects}};

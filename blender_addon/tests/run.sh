@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The add-on's ctest entries; exit 77 (ctest SKIP_RETURN_CODE) when Blender (or xvfb-run) is missing.
+# The add-on's ctest entries; exit 77 (ctest SKIP_RETURN_CODE) when Blender (or Xvfb) is missing.
 #   run.sh headless            test_addon.py in blender -b (PYTHONPATH: the module and the add-on)
 #   run.sh gui OUT.png         shot.py in Blender's window under Xvfb, the screenshot into OUT.png
 #   run.sh install             docs/blender.md's install line into a scratch HOME, then the installed
@@ -12,12 +12,12 @@ case "$1" in
   headless)
     exec blender -b --factory-startup --python-exit-code 1 --python-use-system-env --python "$here/test_addon.py" ;;
   gui)
-    command -v xvfb-run >/dev/null || { echo "xvfb-run not installed: skipped"; exit 77; }
+    command -v Xvfb >/dev/null || { echo "Xvfb not installed: skipped"; exit 77; }
     mkdir -p "$(dirname "$2")"
     rm -f "$2"
     export HOME=$(mktemp -d)
     trap 'rm -rf "$HOME"' EXIT
-    xvfb-run -a -s "-screen 0 1280x800x24" blender --factory-startup --python-use-system-env \
+    "$ELASTICA_SOURCE_DIR/scripts/with-xvfb.sh" -s "-screen 0 1280x800x24" blender --factory-startup --python-use-system-env \
       --python "$here/shot.py" -- "$2" ;;
   install)
     scratch=$(mktemp -d)

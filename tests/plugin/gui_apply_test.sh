@@ -7,12 +7,12 @@
 # attributes the filter wrote (MeshLab's export dialog ticks what the mesh carries). Kept per case
 # in ARTEFACT_DIR: apply_CASE.png (the screen after Apply), export_CASE.png (the export options),
 # for fairing also apply_fairing_running.png (the progress bar mid-run), and meshlab_CASE.log.
-# Run under `xvfb-run -a -s "-screen 0 1920x1080x24"` (ctest does). Usage:
+# Run under `scripts/with-xvfb.sh -s "-screen 0 1920x1080x24"` (ctest does). Usage:
 #   gui_apply_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR DATA_DIR ARTEFACT_DIR ELASTICA_EXE
 set -euo pipefail
 prefix_script=$1 plugin=$2 prefix=$3 data=$4 artefacts=$5 elastica=$6
 source "$(dirname "$0")/gui_lib.sh"   # fail, wait_display, wait_window
-[[ -n "${DISPLAY:-}" ]] || fail "no X display (run under xvfb-run -a)"
+[[ -n "${DISPLAY:-}" ]] || fail "no X display (run under scripts/with-xvfb.sh)"
 for tool in xdotool import; do command -v $tool >/dev/null || fail "$tool not installed (scripts/setup.sh)"; done
 wait_display
 "$prefix_script" --prefix "$prefix" "$plugin" >/dev/null

@@ -7,12 +7,12 @@
 # of the screen, so the screen size matters: ctest runs this on a 1440x900 screen (a 600 px cap).
 # Kept in ARTEFACT_DIR: fairing_dialog.png (the fairing dialog as it opens), help_CASE.png (each
 # dialog with its help) and help_CASE.txt (the probe's measurements).
-# Run under `xvfb-run -a` (ctest does). Usage:
+# Run under `scripts/with-xvfb.sh` (ctest does). Usage:
 #   gui_dialog_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR MESH ARTEFACT_DIR DIALOG_PROBE.so
 set -euo pipefail
 prefix_script=$1 plugin=$2 prefix=$3 mesh=$4 artefacts=$5 probe=$6
 source "$(dirname "$0")/gui_lib.sh"   # fail, wait_display, wait_window
-[[ -n "${DISPLAY:-}" ]] || fail "no X display (run under xvfb-run -a)"
+[[ -n "${DISPLAY:-}" ]] || fail "no X display (run under scripts/with-xvfb.sh)"
 for tool in xdotool import; do command -v $tool >/dev/null || fail "$tool not installed (scripts/setup.sh)"; done
 wait_display
 [[ -f $probe ]] || fail "no dialog probe at $probe"

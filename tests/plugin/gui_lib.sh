@@ -3,9 +3,8 @@
 
 fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
 
-# Waits up to 15 s for the X server on $DISPLAY to answer. xvfb-run starts Xvfb and runs the test
-# at once; on a loaded machine MeshLab once started first and died with "could not connect to
-# display :105" (the next run of the same test passed).
+# Waits up to 15 s for the X server on $DISPLAY to answer (scripts/with-xvfb.sh already waits;
+# kept for a test started by hand under another server).
 wait_display() {
   local deadline=$((SECONDS + 15))
   until xdotool getdisplaygeometry >/dev/null 2>&1; do

@@ -2,7 +2,7 @@
 // directory (nothing is installed into /usr) and runs .mlx scripts of each filter; its output must
 // match `elastica run` with the same script and input: same counts, positions within 1e-5 of the
 // bounding-box diagonal (MeshLab stores float; both compute in double on a copy). Runs under
-// `xvfb-run -a` (ctest does that): MeshLab needs an X display even for meshlabserver.
+// `scripts/with-xvfb.sh` (ctest does that): MeshLab needs an X display even for meshlabserver.
 #include "run_elastica.h"
 #include "file_helpers.h"
 
@@ -91,7 +91,7 @@ class Meshlabserver : public ::testing::Test {
         run(quote(PLUGIN_PREFIX_SCRIPT) + " --prefix " + quote(kPrefix) + " " + quote(PLUGIN_MODULE));
     ASSERT_EQ(r.exitCode, 0) << r.output;
   }
-  void SetUp() override { ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a (ctest does)"; }
+  void SetUp() override { ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under scripts/with-xvfb.sh (ctest does)"; }
 
   // Runs `script` on `input` with meshlabserver and with `elastica run`; loads both outputs.
   void runBoth(const std::string& input, const std::string& script, const std::string& name) {

@@ -15,8 +15,6 @@
 #include <QTextDocument>
 
 #include <algorithm>
-#include <chrono>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -174,8 +172,8 @@ TEST_F(PluginFilter, HelpTextsReadTheSameAsRichText) {
 
 // The time limit: a parameter of every flow filter (60 s by default); reaching it keeps the mesh
 // as the flow left it and logs a warning that names the dialog's field. Progress meanwhile moves
-// with the time used: never back, no big jumps, near the end when the limit ends the run.
-TEST_F(PluginFilter, TimeLimitStopsWithAWarningAndProgressMovesEvenly) {
+// forward, never back, and stays below MeshLab's "done".
+TEST_F(PluginFilter, TimeLimitStopsWithAWarningAndProgressMoves) {
   EXPECT_FLOAT_EQ(defaults("Discrete Elastica Fairing").getFloat("maxSeconds"), 60.f);
   EXPECT_FLOAT_EQ(defaults("Fill Holes with Discrete Elastica").getFloat("maxSeconds"), 60.f);
   fillNoisySphere();
@@ -198,10 +196,11 @@ TEST_F(PluginFilter, TimeLimitStopsWithAWarningAndProgressMovesEvenly) {
   ASSERT_EQ(warnings.size(), 1) << logLines(log).join("\n").toStdString();
   EXPECT_TRUE(warnings[0].contains("stopped at the time limit of 1 s")) << warnings[0].toStdString();
   EXPECT_TRUE(warnings[0].contains("raise 'Time limit (s)' (maxSeconds)")) << warnings[0].toStdString();
-  ASSERT_GE(percents.size(), 10u);
+  // The wiring only: how far each report gets depends on the machine's speed and load, which
+  // FlowProgress.TimeStepsAndStages covers with an injected clock.
+  ASSERT_GE(percents.size(), 2u);
   EXPECT_TRUE(std::is_sorted(percents.begin(), percents.end()));
-  for (size_t i = 1; i < percents.size(); ++i) EXPECT_LE(percents[i] - percents[i - 1], 5) << i;
-  EXPECT_GE(percents.back(), 90);
+  EXPECT_LT(percents.front(), percents.back());
   EXPECT_LE(percents.back(), 99);
 }
 
@@ -212,26 +211,27 @@ TEST(FlowProgress, TimeStepsAndStages) {
   o.maxSeconds = 0.4;
   o.maxSteps = 1000;
   o.subdivisionLevels = 1;
+  double clock = 10;  // an injected clock: the expectations hold on any machine, however loaded
   const auto progress = elastica::app::flowProgress(
       [&](int percent, const std::string&) {
         seen.push_back(percent);
         return true;
       },
-      o);
+      o, [&] { return clock; });
   elastica::FlowProgress p;
   progress(p);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  clock += 0.2;
   progress(p);
   p.level = 1;  // the second of two stages begun
   progress(p);
   p.level = 0;
   p.step = 900;
   progress(p);
-  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  clock += 0.4;
   progress(p);
   ASSERT_EQ(seen.size(), 5u);
-  EXPECT_LE(seen[0], 5);
-  EXPECT_NEAR(seen[1], 50, 10);
+  EXPECT_EQ(seen[0], 0);
+  EXPECT_EQ(seen[1], 50);
   EXPECT_GE(seen[2], 50);
   EXPECT_EQ(seen[3], 90);
   EXPECT_EQ(seen[4], 99);  // capped: 100 is MeshLab's "done"

@@ -172,6 +172,11 @@ struct FlowReport {
   /// Subdivision levels of a coarse start: a large closed mesh remeshed at 2^k its edge length,
   /// flowed there, and subdivided back (0: it flowed at its own resolution).
   int coarseStartLevels = 0;
+  /// FlowOptions::remesh: the most vertices the whole mesh may have at the run's finest level, set
+  /// before the first flow step: the moving vertices after the first remeshing plus what
+  /// curvature-adaptive remeshing of a fair shape of the region's genus adds, ×4 per level to come;
+  /// remeshing never goes beyond it (0: no remeshing, the input's vertices and subdivisions).
+  long long vertexBudget = 0;
   /// Tangential relaxation passes that untangled a jittered moving region before the vector
   /// scheme's flow (0: the region was not tangled, or a remeshing resampled it).
   int untanglePasses = 0;

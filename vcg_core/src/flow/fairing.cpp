@@ -7,6 +7,7 @@
 #include "flow/mesh_quality_stage.h"
 #include "flow/principal_part_filter.h"
 #include "flow/region_guard.h"
+#include "flow/schedule.h"
 #include "flow/semi_implicit_integrator.h"
 #include "flow/vector_integrator.h"
 #include "mesh/self_intersection.h"
@@ -43,10 +44,8 @@ constexpr double kStageTauCarry = 0.25;
 constexpr int kPlateauWindow = 10;
 constexpr double kSubdivisionPlateauFactor = 100;
 // An energy plateau is the shape's only if it holds at a step of at least this fraction of the
-// moving region's relaxation time A²/kShapeScaleFactor. Below, the plateau is the step size's: the
-// elephant "converged" at E 169 with τ at 6.5e-5 of it (a second run went on lowering E), a tube
-// cage's third stage at E 111 with τ at 1e-6 (a second run: E 78.1); the elk's true plateau came at
-// 0.0096 of it, a noisy sphere's energy-rate stop at 0.13–1.8.
+// moving region's relaxation time A²/kShapeScaleFactor; below, the plateau is the step size's
+// (docs/benchmarks.md, "The schedule's rules").
 constexpr double kPlateauScale = 1e-3;
 // A step τ ≥ A²/kShapeScaleFactor relaxes the slowest bending mode of a region of area A within
 // the step (τ/2 · λ ≥ 1): the first eigenvalue of Δ² on a clamped disk of area A is ≈ 1030/A²,
@@ -144,7 +143,7 @@ double energyRate(double energyBefore, double energyAfter, double flowTime, doub
 }
 
 // The paper's explicit scheme until the energy-rate plateau (`tolerance`) or a limit.
-void explicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance, double stageStart) {
+StageEnd explicitStage(FlowState& state, Run& run, FlowStage& stage, double tolerance, double stageStart) {
   ExplicitIntegrator integrator;
   const FlowOptions& opt = run.opt;
   FlowReport& report = run.report;
@@ -194,7 +193,7 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
       state.setPositions(checkpoint);
       report.stop = StopReason::Shrunk;
       run.stopped = true;
-      return;
+      return StageEnd::Settled;
     }
     if (energy > blowUp) diverged("energy rose from " + fmt(lastEnergy) + " to " + fmt(energy));
     if (!(jump < kSizeJump && jump > 1 / kSizeJump))
@@ -204,11 +203,12 @@ void explicitStage(FlowState& state, Run& run, FlowStage& stage, double toleranc
     checkpointEdge = edge;
     checkpoint = state.mesh().positions;
     checkpointStep = report.steps;
-    if (run.record(state, stage.level, energy)) return;
-    if (std::abs(energyRate(lastEnergy, energy, run.time - lastTime, state.activeArea())) < tolerance) return;
+    if (run.record(state, stage.level, energy)) return StageEnd::Settled;
+    if (std::abs(energyRate(lastEnergy, energy, run.time - lastTime, state.activeArea())) < tolerance) return StageEnd::Settled;
     lastEnergy = energy;
     lastTime = run.time;
   }
+  return StageEnd::Settled;
 }
 
 // FlowOptions::shapeTolerance: the accepted step `tau` reached the scale of the moving region and
@@ -224,11 +224,11 @@ bool shapeSettled(FlowState& state, const SemiImplicitIntegrator& integrator, do
 // accepted steps falls below `rateTolerance` (FlowOptions::energyTolerance, as the explicit
 // scheme), the energy plateau (the normal steps of that window lowered E by at most
 // `plateauTolerance`, relative), the shape settled (FlowOptions::shapeTolerance), no step lowers
-// E any more, or a limit. Returns false if the stage ended on a plateau at a step below
+// E any more, or a limit. MeshBound if the stage ended on a plateau at a step below
 // kPlateauScale of the region's relaxation time (report.stop says Stalled): the mesh, not the
-// shape, held the flow back, and the caller may remesh and flow again.
-bool semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rateTolerance, double plateauTolerance,
-                       bool guardEmbedding, double& lastTau) {
+// shape, held the flow back, and the schedule may remesh and flow again.
+StageEnd semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rateTolerance,
+                           double plateauTolerance, bool guardEmbedding, double& lastTau) {
   SemiImplicitIntegrator integrator;
   integrator.guardEmbedding(guardEmbedding);
   const CountCrossings<SemiImplicitIntegrator> countCrossings{integrator, run.report};
@@ -255,7 +255,7 @@ bool semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
       tau *= kShrink;
       if (tau < kSmallestTau * ell4) {  // nothing lowers E any more
         report.stop = StopReason::Stalled;
-        return true;
+        return StageEnd::Settled;
       }
       continue;
     }
@@ -272,21 +272,21 @@ bool semiImplicitStage(FlowState& state, Run& run, FlowStage& stage, double rate
     if (!integrator.lastStepShortened()) tau = std::min(tau * kGrow, kCeilingMargin * ceiling);
     ceiling *= kCeilingGrow;
     const double energy = state.energy();
-    if (run.record(state, stage.level, energy)) return true;
-    if (shapeSettled(state, integrator, accepted, run.opt.shapeTolerance)) return true;
+    if (run.record(state, stage.level, energy)) return StageEnd::Settled;
+    if (shapeSettled(state, integrator, accepted, run.opt.shapeTolerance)) return StageEnd::Settled;
     lowered += integrator.lastEnergyDecrease();
     window.emplace_back(lowered, run.time);
     if (static_cast<int>(window.size()) <= kPlateauWindow) continue;
     const double decrease = lowered - window.front().first, timeBefore = window.front().second;
     window.pop_front();
     if (decrease <= plateauTolerance * std::max(std::abs(energy), 1.0)) {
-      if (accepted >= kPlateauScale * area0 * area0 / kShapeScaleFactor) return true;
+      if (accepted >= kPlateauScale * area0 * area0 / kShapeScaleFactor) return StageEnd::Settled;
       report.stop = StopReason::Stalled;
-      return false;
+      return StageEnd::MeshBound;
     }
-    if (std::abs(energyRate(energy + decrease, energy, run.time - timeBefore, state.activeArea())) < rateTolerance) return true;
+    if (std::abs(energyRate(energy + decrease, energy, run.time - timeBefore, state.activeArea())) < rateTolerance) return StageEnd::Settled;
   }
-  return true;
+  return StageEnd::Settled;
 }
 
 // largestCurvatureTimesEdge (mesh_quality_stage.h) of a flow state's free vertices, on its caches.
@@ -304,28 +304,19 @@ double largestCurvatureTimesEdge(FlowState& state) {
 // converged by any energy rate that a torus's slow mesh drift does not also trip. The state with
 // the lowest energy E is kept (`best`). Ends SelfContact when refusals by the embedding guard
 // drove τ to kStuckFactor of the stage's largest accepted step (or of T, if that is smaller).
-// Returns false if the stage ended because the mesh, not the shape, holds the flow back: a neck
-// forming (κℓ above 0.6 and above 1.25× its reference: the energy would let it pinch for free, a
-// torus's hole closing at E 60 where no torus goes below 8π² ≈ 79), or τ fell to kStuckFactor of
-// that step for other refusals (a mesh distorted by a large change of shape). The caller remeshes
-// and flows again; report.stop says Stalled.
+// Ends NeckFormed when κℓ rises above 0.6 and above 1.25× its reference (the energy would let a
+// neck pinch for free: a torus's hole closing at E 60 where no torus goes below 8π² ≈ 79), and
+// MeshBound when τ fell to kStuckFactor of that step for other refusals (a mesh distorted by a
+// large change of shape); report.stop says Stalled, and the schedule remeshes and flows again.
 // The neck's reference is κℓ at the stage's start, except in the first stage of a run on a region
-// with handles, where it is the lowest κℓ so far (`firstStageWithHandles`): the input's creases and
-// limbs a few edges across (the elephant: κℓ 1.8, rounded off to 1.1 in the first steps) say nothing
-// about a neck. Only with handles: what it protects is a tunnel, and on genus 0 it cut the bull's
-// first stage at 12 steps (E 535), which left the descent to the next stage (268 attempts in all
-// in the sanitizer build, whose rounding differs; 141 in Release). Against its start, the
-// elephant's tunnels closed to pin-holes before the rule fired (κℓ 2.25), and the energy the flow
-// went on lowering was the mesh's: its output, E 143.8, rose to 187 and 270 under one and two Loop
-// subdivisions (bench/loop_energy.py). After a remeshing, the start is the reference: the remesher
-// has just set ℓ ≈ 0.4/κ, and the lowest would cut every stage of a torus nearing the Clifford
-// torus (κℓ just above 0.6 on its inner equator) to two steps.
-// The stuck rule is measured against T too: after a step far beyond T (τ grows ×2 per step), a
-// remeshed stage's first refusals read as stuck although τ was still thousands of times T.
-bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeTolerance, bool guardEmbedding,
-                 bool startAtShapeScale, bool firstStageWithHandles, double& lastTau, TriMesh& best, double& bestEnergy,
-                 bool& neckFormed) {
-  neckFormed = false;
+// with handles (`firstStageWithHandles`), where it is the lowest κℓ so far: an input's creases and
+// limbs a few edges across say nothing about a neck. After a remeshing the start is the reference
+// (the remesher has just set ℓ ≈ 0.4/κ). The stuck rule is measured against T too: after a step far
+// beyond T, a remeshed stage's first refusals are not stuck. Measurements: docs/benchmarks.md,
+// "The schedule's rules".
+StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeTolerance, bool guardEmbedding,
+                     bool startAtShapeScale, bool firstStageWithHandles, double& lastTau, TriMesh& best,
+                     double& bestEnergy) {
   constexpr double kGrowVector = 2, kStuckFactor = 1e-4;
   VectorIntegrator integrator;
   integrator.guardEmbedding(guardEmbedding);
@@ -337,8 +328,7 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
   const double shapeTime = area0 * area0 / kShapeScaleFactor;
   double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
   // The shape came converged from the coarser level: only what the subdivision changed is new, and
-  // it relaxes at any step. The 163k sphere's full-size stage took 6 steps from the carried τ (a
-  // quarter of the coarser level's last), 4 from the relaxation time T.
+  // it relaxes at any step.
   if (startAtShapeScale) tau = std::max(tau, shapeTime);
   double ceiling = std::numeric_limits<double>::infinity();
   int settled = 0;
@@ -360,10 +350,10 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
       if (tau < kSmallestTau * ell4 || tau < kStuckFactor * std::min(largestTau, shapeTime)) {
         if (crossingsInARow > 0) {
           report.stop = StopReason::SelfContact;
-          return true;
+          return StageEnd::Settled;
         }
         report.stop = StopReason::Stalled;
-        return false;
+        return StageEnd::MeshBound;
       }
       continue;
     }
@@ -374,7 +364,7 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
     contactSteps = integrator.lastStepHeldContact() ? contactSteps + 1 : 0;
     if (contactSteps >= kContactSteps) {
       report.stop = StopReason::SelfContact;
-      return true;
+      return StageEnd::Settled;
     }
     // Edge flips are not steps: the embedding guard judges them too (a flip on knot1's swollen
     // tube once left four faces crossing), and flips that make faces cross are undone.
@@ -395,14 +385,13 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
     if (!integrator.lastStepShortened()) tau = std::min(tau * kGrowVector, kCeilingMargin * ceiling);
     ceiling *= kCeilingGrow;
     const double energy = state.energy();
-    if (run.record(state, stage.level, energy)) return true;
+    if (run.record(state, stage.level, energy)) return StageEnd::Settled;
     const double curvatureTimesEdge = largestCurvatureTimesEdge(state);
     if (firstStageWithHandles) neckReference = std::min(neckReference, curvatureTimesEdge);
     if (curvatureTimesEdge > std::max(kNeckCurvatureTimesEdge, kNeckGrowth * neckReference)) {
       // The energy from here on is the mesh's, not the surface's: this state is not kept.
       report.stop = StopReason::Stalled;
-      neckFormed = true;
-      return false;
+      return StageEnd::NeckFormed;
     }
     if (energy < bestEnergy) {
       bestEnergy = energy;
@@ -415,10 +404,10 @@ bool vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeToler
     settled = !integrator.lastStepShortened() && predicted <= shapeTolerance * ellNow ? settled + 1 : 0;
     if (settled >= 2) {
       report.stop = StopReason::Converged;
-      return true;
+      return StageEnd::Settled;
     }
   }
-  return true;
+  return StageEnd::Settled;
 }
 
 // FlowOptions::featureSize under the vector scheme: the flow's principal part for the amount's
@@ -438,46 +427,11 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
   }
 }
 
-// A semi-implicit plateau, or a vector stage the mesh held back, is confirmed by a remeshed reflow
-// of the same level that ends within this fraction of the energy before it (fairMasked).
-constexpr double kConfirmedPlateau = 0.005;
-
-// The vector scheme's remeshed reflows of one level (fairMasked). A stage the mesh held back (a
-// neck remeshed as it starts, refusals that left τ stuck) is flowed again while the stages keep
-// lowering the level's best energy by more than kConfirmedPlateau, at most kMaxReflows times. A
-// reflow that ends within kConfirmedPlateau of the best confirms the plateau (converged);
-// kIdleReflows stages in a row above it end the level, and so does a stage that took no step (the
-// femur, a CAD-like bone, refused every step at 3,897, 25,762 and 141,398 vertices, each remeshing
-// growing the mesh and its energy). With two reflows, the semi-implicit scheme's budget, the
-// elephant stalled at E 162.5 after its second; flowed on while it progresses, it reaches E 141.3
-// (143.2 once Loop-subdivided: resolved, below the genus-3 bound of 150.8) in five stages.
-class VectorReflows {
- public:
-  enum Verdict { Again, Converged, Stop };
-  Verdict judge(double energy, int steps, int reflows) {
-    constexpr int kMaxReflows = 40, kIdleReflows = 3;
-    if (steps == 0) return Stop;
-    if (energy < (1 - kConfirmedPlateau) * best_) {
-      best_ = energy;
-      idle_ = 0;
-      return reflows < kMaxReflows ? Again : Stop;
-    }
-    if (reflows > 0 && energy <= (1 + kConfirmedPlateau) * best_) return Converged;
-    best_ = std::min(best_, energy);
-    return ++idle_ < kIdleReflows && reflows < kMaxReflows ? Again : Stop;
-  }
-
- private:
-  double best_ = std::numeric_limits<double>::infinity();
-  int idle_ = 0;
-};
-
 // Scheme::Automatic: the vector scheme unless the region has handles resolved by fewer than
 // kVectorVerticesPerHandle vertices each (the genus of a closed mesh; a region with a border
 // counts as a disk: closedGenus). Judged on the input's own vertices, the subdivisions asked for
 // not counted: a cage's handles are drawn by a few vertices however finely it is subdivided, and
-// the semi-implicit scheme gets there sooner (the genus-2 and genus-3 block cages at --subdivide 3:
-// 622 and 801 attempts against the vector scheme's 734 and 1,748, at E 112.8 and 143.0).
+// the semi-implicit scheme gets there sooner (docs/benchmarks.md, "The schedule's rules").
 Scheme automaticScheme(const MovingRegion& region, int genus) {
   if (genus == 0) return Scheme::Vector;
   const long long moving = region.roles().freeCount;
@@ -521,23 +475,34 @@ void endStage(FlowState& state, FlowStage& stage, double stageStart, Run& run, M
 }
 
 // A moving region whose vertices were jittered in 3-D (a scan's noise, a mesh perturbed by
-// hand) has folded faces and needle corners. The vector scheme's cotangent operators read that
-// tangle as curvature, and the few vertices at folds make every step so short that the flow
-// crawls: a 32×16 UV sphere jittered by half an edge, connectivity kept, was still at E 173 and a
-// 123 % radius spread after 15,535 steps and 30 s. Untangled first (mesh/tangential_relaxation.h:
-// tangential moves only), it converges round in under 450 steps. A region that no remeshing
-// resamples first (FlowOptions::remesh off) is untangled when a corner is
-// under kTangledAngle or a face is folded against its corners' normals; any other mesh flows as
-// it came (`always` false). A stage that the mesh held back (vectorStage returned false) with the
-// connectivity kept is untangled whatever its angles (`always`) and flowed again, as a remeshing
-// pipeline would remesh it: the same sphere's first stage stalled at E 175 when one large step
-// left needles, and relaxed, it converged round in 84 more steps. Reported as
-// FlowReport::untanglePasses.
+// hand) has folded faces and needle corners, which the vector scheme's cotangent operators read as
+// curvature, and its few folded vertices make every step short. A region that no remeshing
+// resamples (FlowOptions::remesh off) is untangled (mesh/tangential_relaxation.h: tangential moves
+// only) before its first stage when a corner is under kTangledAngle or a face is folded against
+// its corners' normals (`always` false), and whatever its angles (`always`) when the schedule asks
+// for it (NextStage::Untangle), as a remeshing pipeline would remesh. Reported as
+// FlowReport::untanglePasses; measurements: docs/benchmarks.md, "The schedule's rules".
 constexpr double kTangledAngleDegrees = 1;
 void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report) {
   const VertexRoles& roles = region.roles();
   if (roles.freeCount == 0 || !(always || isTangled(region.mesh(), roles.activeFace, kTangledAngleDegrees))) return;
   region.movePositions([&](TriMesh& mesh) { report.untanglePasses += untangle(mesh, roles.free, roles.activeFace); });
+}
+
+// The working resolution of a CAD tessellation whose isotropic remeshing was refused: its long
+// edges split first (splitLongEdges: no input vertex moves), then remeshed. The region is as it
+// came if either step is refused.
+bool remeshTessellation(MovingRegion& region) {
+  TriMesh mesh = region.mesh();
+  std::vector<std::uint8_t> selection = region.selection();
+  if (!splitLongEdges(region)) return false;
+  if (remeshMovingRegion(region, false)) return true;
+  region.edit([&](TriMesh& out, std::vector<std::uint8_t>& sel) {
+    out = std::move(mesh);
+    sel = std::move(selection);
+    return true;
+  });
+  return false;
 }
 
 // fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
@@ -588,13 +553,12 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
                                      ? selfIntersects(region.mesh())
                                      : selfIntersects(region.mesh(), &region.roles().activeFace);
   }
-  // A stage that leaves the mesh unfit for the operators (needsRemeshing) is remeshed and flowed
-  // again, at most kMaxReflows times per level.
-  constexpr int kMaxReflows = 2;
-  bool first = true, adaptive = false;
+  // After each stage the schedule (flow/schedule.h) decides what follows: the same level again
+  // (remeshed, or untangled with the connectivity kept), the next level, the semi-implicit scheme
+  // from the start, or the end of the run.
+  Schedule schedule;
+  bool first = true, remeshAdaptively = false;
   double lastTau = 0;  // the semi-implicit scheme's last accepted step, carried into the next stage
-  int reflows = 0;
-  VectorReflows vectorReflows;
   TriMesh best;  // the vector scheme's lowest-energy state of the current stage
   double bestEnergy = 0;
   // A fairing amount (FlowOptions::featureSize) keeps the user's vertices: an isotropic remeshing
@@ -611,12 +575,26 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     report.coarseStartLevels = coarseLevels;
   } else if (quality && !run.timeLimited() && remeshMovingRegion(region, false)) {
     ++report.remeshings;
+  } else if (quality && !run.timeLimited() && remeshTessellation(region)) {
+    ++report.remeshings;
+    // A CAD part's flow starts from a fresh triangulation, not from a cage's few vertices that
+    // automaticScheme leaves to the semi-implicit scheme: the vector scheme's (joint, genus 2:
+    // semi-implicit stalled at E 134.5, vector converged at 112.3; docs/benchmarks.md).
+    if (requested.scheme == Scheme::Automatic && opt.flow == FlowType::Elastica)
+      opt.scheme = report.scheme = Scheme::Vector;
   } else if (opt.scheme == Scheme::Vector) {
     untangleMovingRegion(region, false, report);
   }
+  // The moving vertices this level may have (vertexBudget), ×4 per level; the report has the finest's.
+  long long movingBudget = 0;
+  if (quality) {
+    movingBudget = vertexBudget(region.roles().freeCount, genus);
+    const long long fixed = region.mesh().vertexCount() - region.roles().freeCount;
+    report.vertexBudget = fixed + movingBudget * (1LL << (2 * std::max(0, opt.subdivisionLevels - level)));
+  }
   for (;; ++level) {
-    if (adaptive && remeshMovingRegion(region, true)) ++report.remeshings;
-    adaptive = false;
+    if (remeshAdaptively && remeshMovingRegion(region, true, 1, movingBudget)) ++report.remeshings;
+    remeshAdaptively = false;
     FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
     requireMovingVertex(state);
     const bool refineLater = level < opt.subdivisionLevels &&
@@ -627,99 +605,68 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
       first = false;
     }
     FlowStage stage = beginStage(state, level);
-    bool meshBound = false;  // the stage ended because the mesh, not the shape, held it back
+    const bool firstStage = report.stages.empty();
+    StageEnd end = StageEnd::Settled;
     try {
       if (opt.scheme == Scheme::Explicit) {
-        explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
+        end = explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
       } else if (opt.scheme == Scheme::Vector) {
-        bool neckFormed = false;
-        meshBound = !vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
-                                 quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && reflows == 0,
-                                 report.stages.empty() && genus > 0, lastTau, best, bestEnergy, neckFormed);
+        end = vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
+                          quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && schedule.reflows() == 0,
+                          firstStage && genus > 0, lastTau, best, bestEnergy);
         // The stage's output is its lowest-energy state (before any neck formed).
-        if (neckFormed || bestEnergy < state.energy())
+        if (end == StageEnd::NeckFormed || bestEnergy < state.energy())
           state = FlowState(best, state.selection(), stageOpt, internal, slider.get());
-        // Scheme::Automatic falls back to the semi-implicit scheme where the vector one cannot take
-        // its first step (the femur, a CAD-like bone with slivers: every step refused, then each
-        // remeshing grew the mesh and its energy). Not when a limit, not the mesh, stopped it.
-        if (requested.scheme == Scheme::Automatic && stage.steps == 0 && report.stages.empty() &&
-            !run.limitReached()) {
-          opt.scheme = report.scheme = Scheme::SemiImplicit;
-          report.stop = StopReason::Converged;
-          region = state.releaseRegion();
-          --level;
-          continue;
-        }
       } else {
         const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
-        meshBound = !semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance,
-                                       plateau, quality && !report.inputSelfIntersects, lastTau);
+        end = semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance,
+                                plateau, quality && !report.inputSelfIntersects, lastTau);
       }
     } catch (const FlowDivergedError&) {
       region = state.releaseRegion();  // the restored checkpoint (faces may have been flipped)
       throw;
     }
     endStage(state, stage, stageStart, run, region);
-    // A semi-implicit plateau at a small step (semiImplicitStage returned false) is a promise only
-    // once a longer run keeps it: a reflow of the same level (remeshed, τ grown again) that ends
-    // within kConfirmedPlateau of the stage before it confirms the shape. The genus-2 and genus-3
-    // block cages plateau at 1e-4 and 1e-5 of their relaxation time, then end 0.04 % and 0.1 % from
-    // the stage before (E 112.73 and 142.37, the minimisers' 112.8 and 142.3); a tube cage pinched
-    // at E 44 went on to 111, and the elephant from 170.7 to 168.9: those say stalled.
-    if (opt.scheme == Scheme::SemiImplicit && meshBound && reflows > 0 && report.stages.size() >= 2 &&
-        std::abs(stage.energy - report.stages.end()[-2].energy) <= kConfirmedPlateau * std::abs(stage.energy)) {
-      meshBound = false;
-      report.stop = StopReason::Converged;
-    }
-    // A limit reached just as the stage converged stops the run before it subdivides: a finer
-    // mesh costs four times the memory and work, and its stage could not take a step.
-    if (run.stopped || run.limitReached()) break;
-    bool reflow = reflows < kMaxReflows;
-    if (quality && opt.scheme == Scheme::Vector && meshBound) {
-      const VectorReflows::Verdict verdict = vectorReflows.judge(stage.energy, stage.steps, reflows);
-      reflow = verdict == VectorReflows::Again;
-      if (verdict == VectorReflows::Converged) {
-        meshBound = false;
-        report.stop = StopReason::Converged;
-      }
-    }
-    if (quality && reflow && (meshBound || needsRemeshing(region))) {
-      ++reflows;  // remesh and flow this level again
-      adaptive = true;
-      --level;
-      report.stop = StopReason::Converged;
+    ScheduleContext context;
+    context.scheme = opt.scheme;
+    context.automatic = requested.scheme == Scheme::Automatic;
+    context.quality = quality;
+    context.firstStage = firstStage;
+    context.refineLater = refineLater;
+    if (report.stages.size() >= 2) context.previousEnergy = report.stages.end()[-2].energy;
+    context.stopped = [&] { return run.stopped || run.limitReached(); };
+    context.needsRemeshing = [&] { return needsRemeshing(region); };
+    const NextStage next = schedule.next({end, stage.steps, stage.energy}, context, report.stop);
+    if (next == NextStage::Stop) break;
+    if (next == NextStage::Refine) {
+      movingBudget *= 4;
+      // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
+      // midpoints' facets would be creases for the finer level to flow out.
+      if (coarseLevels > 0)
+        region.edit([](TriMesh& mesh, std::vector<std::uint8_t>&) {
+          subdivideLoop(mesh);
+          return true;
+        });
+      else
+        subdivideOneLevel(region);
       continue;
     }
-    if (!quality && opt.scheme == Scheme::Vector && meshBound && reflows < kMaxReflows) {  // connectivity kept
-      ++reflows;
+    --level;  // the same level again
+    if (next == NextStage::FallBack) {
+      // The stage that took no step is not the run's: it starts over with the other scheme.
+      report.stages.pop_back();
+      opt.scheme = report.scheme = Scheme::SemiImplicit;
+    } else if (next == NextStage::Reflow) {
+      remeshAdaptively = true;
+    } else {
       untangleMovingRegion(region, true, report);
-      --level;
-      report.stop = StopReason::Converged;
-      continue;
     }
-    if (!refineLater) break;
-    reflows = 0;
-    vectorReflows = VectorReflows{};
-    report.stop = StopReason::Converged;  // the next stage decides
-    // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
-    // midpoints' facets would be creases for the finer level to flow out (the 163k sphere's
-    // full-size stage: 4 steps after midpoints, 3 after Loop; its middle stage 3 → 2).
-    if (coarseLevels > 0)
-      region.edit([](TriMesh& mesh, std::vector<std::uint8_t>&) {
-        subdivideLoop(mesh);
-        return true;
-      });
-    else
-      subdivideOneLevel(region);
   }
   // The final approach with the connectivity kept: the vector scheme's converged state is the
   // minimiser of W on this triangulation, whose tangential freedom can trade roundness for energy
-  // where the mesh is irregular (a 32×16 UV sphere's valence-32 poles sink: spread 0.65 % from a
-  // round start, 1.25 % from a jittered one, at E 24.71 < 8π). The paper's normal flow, after the
-  // vertices are evened out tangentially, settles where the shape is the surface's, not the
-  // triangulation's: 0.2 % in 19 semi-implicit steps, E 24.74 (0.1 % above the vector minimum).
-  if (opt.scheme == Scheme::Vector && !quality && !run.stopped &&
-      report.stop == StopReason::Converged) {
+  // where the mesh is irregular; the paper's normal flow, after the vertices are evened out
+  // tangentially, settles where the shape is the surface's, not the triangulation's.
+  if (finalApproach(opt.scheme, quality, run.stopped, report.stop)) {
     untangleMovingRegion(region, true, report);
     FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
     FlowStage stage = beginStage(state, level);

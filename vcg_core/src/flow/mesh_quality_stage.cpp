@@ -58,6 +58,8 @@ constexpr int kFloorVerticesPerHandle = 1000, kFloorVertices = 100;
 constexpr double kTargetCurvatureTimesEdge = 0.4, kMaxRefinement = 8;
 constexpr int kMaxGrowth = 8;  // a remeshing leaves at most 8× the vertices (+1000)
 constexpr double kMaxEdgeToTarget = 1000;
+// remeshMovingRegion within a budget: fits of the targets after the first, before giving up.
+constexpr int kBudgetAttempts = 2;
 // A flowed mesh needs remeshing below this angle or above this κℓ (needsRemeshing).
 constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
 
@@ -97,6 +99,54 @@ Curvature curvatureOf(const MovingRegion& region) {
   const CurvatureMeasureOptions defaults;
   const Geometry geo = computeGeometry(region.topology(), region.mesh().positions, defaults.area);
   return computeCurvature(region.topology(), geo, region.mesh().positions, defaults.curvature);
+}
+
+// The vertices a remeshing toward `sigma` leaves on the flagged faces: two faces a vertex, each
+// face an equilateral triangle of its corners' mean target.
+double predictedVertices(const TriMesh& mesh, const std::vector<std::uint8_t>& region, const std::vector<double>& sigma,
+                         double floor) {
+  double count = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    if (!region[f]) continue;
+    const Face& t = mesh.faces[f];
+    const Vec3& a = mesh.positions[t[0]];
+    const double area = 0.5 * (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a).norm();
+    const double s = std::max((sigma[t[0]] + sigma[t[1]] + sigma[t[2]]) / 3, floor);
+    count += 0.5 * area / (0.4330127018922193 * s * s);
+  }
+  return count;
+}
+
+// Raises the shortest targets to one floor, the lowest that leaves at most `maxMoving` vertices
+// (predictedVertices), by bisection on the floor between the shortest and the longest target.
+void fitTargets(const TriMesh& mesh, const std::vector<std::uint8_t>& region, std::vector<double>& sigma,
+                double maxMoving) {
+  double lo = *std::min_element(sigma.begin(), sigma.end()), hi = *std::max_element(sigma.begin(), sigma.end());
+  if (predictedVertices(mesh, region, sigma, lo) <= maxMoving) return;
+  if (predictedVertices(mesh, region, sigma, hi) > maxMoving) {
+    hi *= std::sqrt(predictedVertices(mesh, region, sigma, hi) / maxMoving);  // coarser than uniform
+  }
+  for (int k = 0; k < 40; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (predictedVertices(mesh, region, sigma, mid) > maxMoving ? lo : hi) = mid;
+  }
+  for (double& s : sigma) s = std::max(s, hi);
+}
+
+// Gives the region a rewritten mesh whose faces flagged in `region` replaced the moving faces:
+// faces outside keep their slots (remeshRegion refills dead slots from the end only while no face
+// outside the region would move); the rewritten faces are selected.
+bool adopt(MovingRegion& moving, TriMesh&& rewritten, const std::vector<std::uint8_t>& region) {
+  return moving.edit([&](TriMesh& out, std::vector<std::uint8_t>& selection) {
+    if (!selection.empty()) {
+      std::vector<std::uint8_t> next(rewritten.faces.size(), 1);
+      for (std::size_t f = 0; f < next.size(); ++f)
+        if (!region[f]) next[f] = selection[f];
+      selection.swap(next);
+    }
+    out = std::move(rewritten);
+    return true;
+  });
 }
 
 }  // namespace
@@ -182,7 +232,36 @@ std::vector<double> largestPrincipalCurvature(const MovingRegion& region) {
   return kappa;
 }
 
-bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening) {
+bool splitLongEdges(MovingRegion& moving) {
+  const TriMesh& mesh = moving.mesh();
+  std::vector<std::uint8_t> region = movingFaces(mesh, moving.roles());
+  const double target = std::sqrt(4 * medianFaceArea(mesh, region) / std::sqrt(3.0));
+  if (!(target > 0)) return false;
+  for (int f = 0; f < mesh.faceCount(); ++f) {  // a vertex thrown far away (remeshMovingRegion)
+    if (!region[f]) continue;
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k)
+      if (!((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm() <= kMaxEdgeToTarget * target)) return false;
+  }
+  TriMesh split = mesh;
+  std::vector<std::uint8_t> none(mesh.positions.size(), 0);  // no vertex of the input moves
+  std::vector<double> sigma(mesh.positions.size(), target);
+  PatchRemeshingOptions options;
+  options.iterations = 1;
+  options.relaxPasses = 0;
+  remeshRegion(split, region, sigma, none, options);
+  if (split.vertexCount() == mesh.vertexCount()) return false;
+  if (!selfIntersects(mesh) && selfIntersects(split)) return false;
+  return adopt(moving, std::move(split), region);
+}
+
+long long vertexBudget(long long moving, int genus) {
+  constexpr double kVerticesPerEnergy = 1 / (kTargetCurvatureTimesEdge * kTargetCurvatureTimesEdge * 0.8660254037844386);
+  constexpr double kWidening = 4;
+  return moving + static_cast<long long>(std::ceil(kWidening * kVerticesPerEnergy * 8 * M_PI * (genus + 3)));
+}
+
+bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving) {
   const TriMesh& mesh = moving.mesh();
   const Topology& topo = moving.topology();
   const VertexRoles& roles = moving.roles();
@@ -210,8 +289,6 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   const bool crossedBefore = selfIntersects(mesh);
   const bool local = crossedBefore && !moving.selection().empty();
   const std::size_t crossingBefore = local ? selfIntersectingFaces(mesh, &region).size() : 0;
-  TriMesh remeshed = mesh;
-  std::vector<std::uint8_t> movable = roles.free;
   std::vector<double> sigma(mesh.positions.size(), target);
   if (curvatureAdaptive) {
     // Where the surface bends within a few edges (a neck, a tight handle), the discrete energy
@@ -224,11 +301,29 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
       if (k > 0) sigma[v] = std::clamp(kTargetCurvatureTimesEdge / k, target / kMaxRefinement, target);
     }
   }
-  const std::vector<std::uint8_t> regionBefore = region;
   PatchRemeshingOptions options;
   // Curvature-adaptive edges and a cage's long slivers need more vertices, but not without end.
   options.maxVertices = kMaxGrowth * mesh.vertexCount() + 1000;
-  remeshRegion(remeshed, region, sigma, movable, options);
+  // Within `maxMoving`: the targets are fitted to it (fitTargets), and fitted again to a smaller
+  // count in proportion where the remeshing left more than it predicted; a remeshing that still
+  // leaves more is not made.
+  const long long fixed = mesh.vertexCount() - roles.freeCount;
+  TriMesh remeshed;
+  std::vector<std::uint8_t> remeshedRegion;
+  double aim = static_cast<double>(maxMoving);
+  for (int attempt = 0;; ++attempt) {
+    std::vector<double> fitted = sigma;
+    if (maxMoving > 0) fitTargets(mesh, region, fitted, aim);
+    remeshed = mesh;
+    remeshedRegion = region;
+    std::vector<std::uint8_t> movable = roles.free;
+    remeshRegion(remeshed, remeshedRegion, fitted, movable, options);
+    const long long left = remeshed.vertexCount() - fixed;
+    if (maxMoving <= 0 || left <= maxMoving) break;
+    if (attempt == kBudgetAttempts) return false;
+    aim *= static_cast<double>(maxMoving) / left;
+  }
+  region.swap(remeshedRegion);  // remeshedRegion: the flags before
   // A remeshing that stacks vertices at one point is undone, also where the mesh crossed itself
   // before and the crossing test cannot judge it (a noisy region of the lion's head scan: the
   // adaptive remeshing left 49 vertices at one point and the next stage's energy at 4,000 times
@@ -244,22 +339,11 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   constexpr double kRemeshBlowUp = 10;
   if (local) {
     FlowOptions measure;
-    const double before = energyOfFaces(mesh, regionBefore, measure), after = energyOfFaces(remeshed, region, measure);
+    const double before = energyOfFaces(mesh, remeshedRegion, measure), after = energyOfFaces(remeshed, region, measure);
     if (!(after <= kRemeshBlowUp * std::max(std::abs(before), 1.0))) return false;
   }
 
-  // Faces outside the region keep their slots (remeshRegion refills dead slots from the end only
-  // while no face outside the region would move); region faces are selected.
-  return moving.edit([&](TriMesh& out, std::vector<std::uint8_t>& selection) {
-    if (!selection.empty()) {
-      std::vector<std::uint8_t> next(remeshed.faces.size(), 1);
-      for (std::size_t f = 0; f < next.size(); ++f)
-        if (!region[f]) next[f] = selection[f];
-      selection.swap(next);
-    }
-    out = std::move(remeshed);
-    return true;
-  });
+  return adopt(moving, std::move(remeshed), region);
 }
 
 }  // namespace elastica

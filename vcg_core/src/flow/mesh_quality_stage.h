@@ -74,8 +74,30 @@ double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 /// renumbered only where movable ones were removed. The selection (if any) follows the faces. The
 /// remeshing is undone, and false returned, if it would make faces cross that did not cross before
 /// (mesh/self_intersection.h). `coarsening` multiplies the target edge length (a coarse start,
-/// coarseStartLevels: 2^k for k levels).
-bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1);
+/// coarseStartLevels: 2^k for k levels). `maxMoving` (0: none) bounds the moving vertices the
+/// remeshing leaves (vertexBudget): where the curvature-adaptive edges would need more, the
+/// shortest targets are raised to a common floor until the predicted count fits, so the necks stay
+/// the most refined places, and splitting stops at the bound.
+bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1, long long maxMoving = 0);
+
+/// A CAD tessellation's long thin triangles, split toward the edge length of remeshMovingRegion's
+/// isotropic target (moving faces only, one pass without relaxation): no input vertex moves and
+/// new ones are made on its edges, so the surface changes only where the remesher's flips and
+/// collapses of new vertices re-form faces that turn little. The relaxation of an isotropic
+/// remeshing slides vertices over slivers a long way and can make faces cross (joint, a genus-2
+/// part of 221 vertices with corners under 0.5°; a washer of aspect-40 strips), and the remeshing
+/// is then refused; after the split its moves are short. False, with the region as it was, if
+/// nothing was split, an edge is a vertex thrown far away, or the split made faces cross.
+bool splitLongEdges(MovingRegion& region);
+
+/// The moving vertices a flow of genus `genus` needs at the current level: those it has now
+/// (`moving`) plus what curvature-adaptive remeshing of a fair shape adds. Edges of 0.4/κ put
+/// κ²/(0.4² · √3/2) ≈ 7.2 κ² vertices on a unit of area, and ∫κ² ≤ E, the energy, which a fair
+/// shape of genus g keeps below 8π(g + 3) (the genus bound 32π + 8π(g − 1)); four times that, for
+/// the one-ring maximum of κ that widens each refined place and the grading around it (twice that
+/// would have bound the elephant's run: docs/benchmarks.md). Each later level
+/// multiplies it by 4 (a 1-to-4 subdivision).
+long long vertexBudget(long long moving, int genus);
 
 /// Levels k of a coarse start for the whole-mesh fair of a large closed mesh: remeshed at 2^k times
 /// its edge length (a 4^k-th of its vertices, no fewer than kCoarseStartVertices) and flowed there,

@@ -19,7 +19,7 @@
 namespace elastica {
 namespace {
 
-// CHOLMOD (SuiteSparse 5, Debian 12) runs loops of its supernodal factorisation and solves with a
+// CHOLMOD (SuiteSparse 5, Debian 12) runs loops of its factorisations and solves with a
 // fixed team of four OpenMP threads whatever OMP_NUM_THREADS says: on a 2-core machine the threads
 // wait on each other (futex calls and spinning were a third of a 794-edge hole's fill, and its 42
 // factorisations of a 25,000-row system took 6.4 s; with the team switched off, 2.7 s). While one
@@ -58,13 +58,18 @@ struct SpdSolver::Impl {
   using Matrix = Eigen::SparseMatrix<double>;
   using Simplicial = Eigen::SimplicialLDLT<Matrix>;
 #ifdef ELASTICA_HAVE_CHOLMOD
-  using Supernodal = Eigen::CholmodSupernodalLLT<Matrix>;
+  // Simplicial, not supernodal: the supernodal factorisation does its dense work in the system's
+  // BLAS, whose kernels are chosen per CPU at run time (OpenBLAS: Haswell, SkylakeX, Cooperlake,
+  // Zen, ...) and round differently, so the same input gave another mesh on another machine (the
+  // cow: 136, 89 and 96 attempts under OpenBLAS's Cooperlake, Haswell and Prescott kernels). The
+  // simplicial factorisation is plain C in CHOLMOD itself, with CHOLMOD's ordering.
+  using Cholmod = Eigen::CholmodSimplicialLLT<Matrix>;
 #else
-  using Supernodal = Simplicial;
+  using Cholmod = Simplicial;
 #endif
   SpdBackend requested;
   std::unique_ptr<Simplicial> simplicial;
-  std::unique_ptr<Supernodal> supernodal;
+  std::unique_ptr<Cholmod> cholmod;
 
   bool useCholmod(int rows) const {
     if (!cholmodAvailable()) return false;
@@ -86,11 +91,11 @@ bool SpdSolver::cholmodAvailable() {
 void SpdSolver::analyzePattern(const Eigen::SparseMatrix<double>& A) {
   factored_ = false;
   impl_->simplicial.reset();
-  impl_->supernodal.reset();
+  impl_->cholmod.reset();
   if (impl_->useCholmod(static_cast<int>(A.rows()))) {
     [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
-    impl_->supernodal = std::make_unique<Impl::Supernodal>();
-    impl_->supernodal->analyzePattern(A);
+    impl_->cholmod = std::make_unique<Impl::Cholmod>();
+    impl_->cholmod->analyzePattern(A);
   } else {
     impl_->simplicial = std::make_unique<Impl::Simplicial>();
     impl_->simplicial->analyzePattern(A);
@@ -98,12 +103,12 @@ void SpdSolver::analyzePattern(const Eigen::SparseMatrix<double>& A) {
 }
 
 bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
-  if (!impl_->simplicial && !impl_->supernodal) analyzePattern(A);
+  if (!impl_->simplicial && !impl_->cholmod) analyzePattern(A);
   [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
-  if (impl_->supernodal) {
+  if (impl_->cholmod) {
     [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
-    impl_->supernodal->factorize(A);
-    return factored_ = impl_->supernodal->info() == Eigen::Success;
+    impl_->cholmod->factorize(A);
+    return factored_ = impl_->cholmod->info() == Eigen::Success;
   }
   impl_->simplicial->factorize(A);
   // LDLᵀ also factors an indefinite matrix: a pivot that is not positive says A is not SPD.
@@ -113,9 +118,9 @@ bool SpdSolver::factorize(const Eigen::SparseMatrix<double>& A) {
 template <class Dense>
 void SpdSolver::solveDense(const Dense& b, Dense& x) const {
   [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
-  if (impl_->supernodal) {
+  if (impl_->cholmod) {
     [[maybe_unused]] OneThreadForCholmod oneThread;  // empty without OpenMP
-    x = impl_->supernodal->solve(b);
+    x = impl_->cholmod->solve(b);
     return;
   }
   x = impl_->simplicial->solve(b);
@@ -211,7 +216,7 @@ bool SpdSolver::solveStep(const Eigen::SparseMatrix<double>& A, const Eigen::Mat
 }
 
 const char* SpdSolver::backendName() const {
-  if (impl_->supernodal && cholmodAvailable()) return "CHOLMOD supernodal";
+  if (impl_->cholmod && cholmodAvailable()) return "CHOLMOD simplicial";
   return "SimplicialLDLT";
 }
 

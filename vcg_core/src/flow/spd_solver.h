@@ -1,5 +1,6 @@
-// Sparse symmetric positive definite solves: CHOLMOD's supernodal Cholesky (SuiteSparse) where the
-// build has it and the system is large, Eigen's SimplicialLDLT otherwise. The fill-reducing
+// Sparse symmetric positive definite solves: CHOLMOD's simplicial Cholesky (SuiteSparse) where the
+// build has it and the system is large, Eigen's SimplicialLDLT otherwise. Neither calls BLAS, so
+// the bits do not depend on the CPU's BLAS kernels. The fill-reducing
 // ordering and the symbolic factorisation depend on the sparsity pattern only: analyse once per
 // pattern, then factorise numerically for every new set of values.
 #pragma once
@@ -13,11 +14,11 @@ namespace elastica {
 
 /// Which factorisation an SpdSolver uses.
 enum class SpdBackend {
-  /// CHOLMOD supernodal above `kCholmodMinRows` rows when built with it, else SimplicialLDLT.
+  /// CHOLMOD simplicial above `kCholmodMinRows` rows when built with it, else SimplicialLDLT.
   Auto,
   /// Eigen's SimplicialLDLT (AMD ordering): no dependency, fastest on small systems.
   SimplicialLDLT,
-  /// CHOLMOD's supernodal LLᵀ (BLAS on dense supernodes); falls back to SimplicialLDLT when the
+  /// CHOLMOD's simplicial LLᵀ (its AMD/METIS ordering, no BLAS); falls back to SimplicialLDLT when the
   /// build has no CHOLMOD (see SpdSolver::cholmodAvailable()).
   Cholmod,
 };
@@ -81,7 +82,7 @@ class SpdSolver {
   /// Whether a factorisation is held (what solve() and solvePreconditioned() use).
   bool factored() const { return factored_; }
 
-  /// The backend in use after analyzePattern ("CHOLMOD supernodal" or "SimplicialLDLT").
+  /// The backend in use after analyzePattern ("CHOLMOD simplicial" or "SimplicialLDLT").
   const char* backendName() const;
 
  private:

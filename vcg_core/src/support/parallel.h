@@ -61,34 +61,35 @@ void parallelFor(int n, const Body& body) {
   for (int i = 0; i < n; ++i) body(i);
 }
 
-/// Folds [0, n) into an accumulator: the range is cut into omp_get_max_threads() contiguous
-/// chunks (as a static schedule on that many threads cuts it), each folded from `init` with
-/// body(i, acc), and the partial results are joined in chunk order with join(acc, partial). The
-/// chunks do not depend on how many threads run them (parallelTeamSize), so a run gives the same
-/// bits whatever the machine's load. (Not for bool: std::vector<bool> packs bits.)
+/// Folds [0, n) into an accumulator. Above kParallelGrain the range is cut into kReduceChunks
+/// contiguous chunks, each folded from `init` with body(i, acc), and the partial results are joined
+/// in chunk order with join(acc, partial); below it, one accumulator folds the whole range. The
+/// chunks are the same whatever runs them (OMP_NUM_THREADS, parallelTeamSize, a build without
+/// OpenMP), so the result's bits never depend on the machine, its core count or its load.
+/// (Not for bool: std::vector<bool> packs bits.)
+inline constexpr int kReduceChunks = 16;
 template <class Acc, class Body, class Join>
 Acc parallelReduce(int n, const Acc& init, const Body& body, const Join& join) {
-#ifdef _OPENMP
-  const int chunks = omp_get_max_threads();
-  if (n > kParallelGrain && chunks > 1) {
-    std::vector<Acc> partial(chunks, init);
-    const int team = parallelTeamSize();
-#pragma omp parallel for schedule(static, 1) num_threads(team) if (team > 1)
-    for (int c = 0; c < chunks; ++c) {
-      // libgomp's static split of n items over `chunks` threads: the first n % chunks get one more.
-      const int q = n / chunks, r = n % chunks;
+  if (n > kParallelGrain) {
+    std::vector<Acc> partial(kReduceChunks, init);
+    auto fold = [&](int c) {
+      const int q = n / kReduceChunks, r = n % kReduceChunks;  // the first r chunks get one more
       const int begin = c * q + (c < r ? c : r), end = begin + q + (c < r ? 1 : 0);
       Acc mine = init;  // a local: threads updating neighbouring vector slots would share cache lines
       for (int i = begin; i < end; ++i) body(i, mine);
       partial[c] = mine;
-    }
+    };
+#ifdef _OPENMP
+    const int team = parallelTeamSize();
+#pragma omp parallel for schedule(static) num_threads(team) if (team > 1)
+    for (int c = 0; c < kReduceChunks; ++c) fold(c);
+#else
+    for (int c = 0; c < kReduceChunks; ++c) fold(c);
+#endif
     Acc acc = init;
     for (const Acc& p : partial) join(acc, p);
     return acc;
   }
-#else
-  (void)join;  // one accumulator: nothing to join without OpenMP
-#endif
   Acc acc = init;
   for (int i = 0; i < n; ++i) body(i, acc);
   return acc;

@@ -27,8 +27,11 @@ using Progress = std::function<bool(int percent, const std::string& what)>;
 /// The flow's progress as a face shows it: the larger of the share of the time limit used
 /// (o.maxSeconds, wall time from this call), of o.maxSteps taken and of the coarse-to-fine stages
 /// begun, capped at 99 % and never going back; so it moves with the time used instead of creeping
-/// along the share of a large maxSteps and jumping at the end. Empty if `progress` is.
-std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o);
+/// along the share of a large maxSteps and jumping at the end. Empty if `progress` is. `clock`
+/// gives the seconds since some fixed time (default: the steady clock; tests inject their own).
+using Clock = std::function<double()>;
+std::function<bool(const FlowProgress&)> flowProgress(const Progress& progress, const FlowOptions& o,
+                                                      const Clock& clock = {});
 
 /// How much a summary line matters: MeshLab logs a warning as one; the other faces print both.
 enum class Severity { Info, Warning };

@@ -1,0 +1,213 @@
+#!/usr/bin/env bash
+# The MeshLab plugin built for, and run in, Debian 13 (trixie)'s MeshLab 2022.02, on a Debian 12 machine
+# (as root):
+#
+#   scripts/meshlab2022.sh [--screenshot OUT.png]
+#
+# 1. A trixie root, made by debootstrap from the Debian mirror of the system's own apt sources (read
+#    at run time from /etc/apt/sources.list.d/*.sources or /etc/apt/sources.list), with trixie's
+#    meshlab and the build's Debian packages installed in it: $cache/trixie-root (cache: as
+#    scripts/setup.sh, $ELASTICA_CACHE_DIR or ~/.cache/elastica). Made once; a later run reuses it.
+# 2. In it, this source tree (bind-mounted read-only) built with -DELASTICA_MESHLAB_API=2022 against
+#    trixie's meshlab source tree (scripts/setup.sh fetches it) and trixie's libmeshlab-common.so: the
+#    plugin, the elastica command, and tests/meshlab2022/run_filter (a driver that loads plugins
+#    through MeshLab's own PluginManager, as MeshLab does, and applies a filter of an .mlx script).
+#    Build folder: $cache/trixie-root/build/elastica.
+# 3. The fairing and fill filters run in that MeshLab on meshlab_plugin/examples/{fairing,fill_holes}.mlx
+#    (a noisy sphere, a torus cage split three times; the bunny with its flank cut away), loaded from MeshLab's plugin folder after
+#    `apt-get install` of the plugin's trixie .deb; each result equals `elastica run`'s on the same
+#    script and input (same counts, positions within 1e-5 of the diagonal) and differs from the input.
+# 4. With --screenshot: MeshLab 2022.02's window under Xvfb, the faired sphere loaded and the menu
+#    Filters > Smoothing, Fairing and Deformation open, saved as OUT.png (the faired torus).
+# 5. The Load-Plugins file: the package removed again, the file loaded with Help > Plugin Info > Load
+#    Plugins in MeshLab's GUI (Xvfb), which copies it into its per-user folder; the fairing filter from
+#    that copy equals `elastica run` again.
+# Leaves $cache/meshlab2022/: the trixie .deb of the plugin (meshlab-plugin-elastica_*_amd64.deb),
+# the Load-Plugins file (libfilter_elastica.so with a note of its MeshLab version), the outputs.
+# Prints each step's time.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+src=$PWD
+shot=
+if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
+[[ $# -eq 0 ]] || { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+[[ $(id -u) -eq 0 ]] || { echo "meshlab2022: run as root (debootstrap and chroot)" >&2; exit 1; }
+
+t0=$SECONDS
+step() { printf '\n== meshlab2022 [%4d s] %s\n' $((SECONDS - t0)) "$*"; }
+fail() { printf 'meshlab2022: FAIL: %s\n' "$*" >&2; exit 1; }
+export DEBIAN_FRONTEND=noninteractive LC_ALL=C.UTF-8
+
+cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
+root=$cache/trixie-root
+out=$cache/meshlab2022
+mltree=$(ls -d "$cache"/meshlab-trixie-src-2022.02*/ 2>/dev/null | tail -n1)
+[[ -n "$mltree" && -f "$mltree/.elastica-complete" ]] || fail "no MeshLab 2022.02 source tree in $cache (run scripts/setup.sh)"
+
+# The packages of the root: trixie's MeshLab, and what the plugin, the command and the driver build with.
+# meshlab and its Recommends (apt-get install meshlab would add them on a fresh root, not on one where
+# meshlab is already installed): several of its plugins need them, and MeshLab's plugin manager fails on
+# any plugin it cannot load.
+root_packages=(meshlab lib3ds-1-3 libopenctm1 libxerces-c3.2t64 libmuparser2v5 libqhull-r8.0 libgmp10 libmpfr6 chemical-mime-data
+  g++ cmake make pkg-config dpkg-dev file
+  qtbase5-dev libqt5opengl5-dev libglew-dev
+  libeigen3-dev libsuitesparse-dev libopenblas0-serial libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev
+  xvfb xauth xdotool imagemagick)
+
+# The Debian mirror the system's apt uses (the URI of its main suite), never written in this repository.
+mirror() {
+  local codename f
+  codename=$(. /etc/os-release && echo "$VERSION_CODENAME")
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [[ -f $f ]] || continue
+    awk -v cn="$codename" '
+      /^[ \t]*$/ { if (ok && uri != "") { print uri; exit } ok = 0; uri = ""; next }
+      /^Types:/ { deb = ($0 ~ /(^|[ \t])deb([ \t]|$)/) }
+      /^URIs:/ { split($0, u, /[ \t]+/); uri = u[2] }
+      /^Suites:/ { ok = 0; for (i = 2; i <= NF; i++) if ($i == cn) ok = deb }
+      END { if (ok && uri != "") print uri }' "$f"
+  done
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+    [[ -f $f ]] || continue
+    awk -v cn="$codename" '$1 == "deb" { i = 2; if ($2 ~ /^\[/) while ($i !~ /\]$/) i++; if ($2 ~ /^\[/) i++; if ($(i+1) == cn) print $i }' "$f"
+  done
+}
+
+mounted=()
+cleanup() {
+  local m p
+  # Whatever this run started in the root and left (an Xvfb of a failed xvfb-run): only processes whose
+  # root directory is the trixie root.
+  for p in /proc/[0-9]*; do
+    [[ "$(readlink "$p/root" 2>/dev/null)" == "$root" ]] && kill "${p#/proc/}" 2>/dev/null
+  done
+  sleep 0.5
+  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[i]}" 2>/dev/null || true; done
+}
+trap cleanup EXIT
+bind() {  # bind SOURCE TARGET [ro]
+  mkdir -p "$2"
+  mount --bind "$1" "$2"
+  mounted+=("$2")
+  [[ "${3:-}" == ro ]] && mount -o remount,bind,ro "$2"
+  return 0
+}
+in_root() { chroot "$root" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LC_ALL=C.UTF-8 DEBIAN_FRONTEND=noninteractive "$@"; }
+
+# ---------------------------------------------------------------- 1. the trixie root
+step "trixie root ($root)"
+command -v debootstrap >/dev/null || { apt-get update -qq; apt-get install -y -qq --no-install-recommends debootstrap >/dev/null; }
+if [[ ! -f $root/.elastica-debootstrap ]]; then
+  uri=$(mirror | head -n1)
+  [[ -n "$uri" ]] || fail "no Debian mirror found in the system's apt sources"
+  echo "debootstrap --variant=minbase trixie from the system's mirror $uri"
+  findmnt -rn -o TARGET | grep -q "^$root/" && fail "something is mounted under $root: unmount it first"
+  rm -rf "$root"
+  debootstrap --variant=minbase trixie "$root" "$uri" >"$cache/trixie-debootstrap.log" 2>&1 \
+    || { tail -n 20 "$cache/trixie-debootstrap.log" >&2; fail "debootstrap failed (log: $cache/trixie-debootstrap.log)"; }
+  touch "$root/.elastica-debootstrap"
+fi
+bind /proc "$root/proc"
+bind /dev "$root/dev"
+bind /dev/pts "$root/dev/pts"
+wanted="${root_packages[*]}"
+if [[ "$(cat "$root/.elastica-packages" 2>/dev/null)" != "$wanted" ]]; then
+  in_root apt-get update -qq
+  in_root apt-get install -y -qq --no-install-recommends "${root_packages[@]}" >"$cache/trixie-apt.log" 2>&1 \
+    || { tail -n 20 "$cache/trixie-apt.log" >&2; fail "apt-get install in the trixie root failed (log: $cache/trixie-apt.log)"; }
+  echo "$wanted" >"$root/.elastica-packages"
+fi
+echo "trixie's meshlab: $(in_root dpkg-query -W -f='${Version}' meshlab); $(du -shx "$root" 2>/dev/null | cut -f1) in all"
+
+# ---------------------------------------------------------------- 2. the build in the root
+step "build in the trixie root: the plugin for MeshLab 2022.02, the command, run_filter"
+bind "$src" "$root/src/elastica" ro
+bind "$mltree" "$root/src/meshlab" ro
+commit=$(git -C "$src" describe --always --dirty 2>/dev/null || echo unknown)
+in_root cmake -S /src/elastica -B /build/elastica -DCMAKE_BUILD_TYPE=Release -DELASTICA_MESHLAB_API=2022 \
+  -DMESHLAB_SOURCE_DIR=/src/meshlab -DELASTICA_BUILD_TESTS=OFF -DELASTICA_BUILD_BENCH=OFF -DELASTICA_BUILD_PYTHON=OFF \
+  -DELASTICA_SOURCE_COMMIT="$commit" -DELASTICA_DEB_MAINTAINER="$(git -C "$src" log -1 --format='%an <%ae>')" >"$cache/trixie-build.log" 2>&1 \
+  || { tail -n 30 "$cache/trixie-build.log" >&2; fail "cmake (configure) failed in the trixie root"; }
+in_root nice cmake --build /build/elastica -j2 --target filter_elastica elastica >>"$cache/trixie-build.log" 2>&1 \
+  || { grep -m5 -A5 'error' "$cache/trixie-build.log" >&2; fail "the build failed in the trixie root (log: $cache/trixie-build.log)"; }
+in_root cmake -S /src/elastica/packaging/meshlab2022 -B /build/run_filter -DMESHLAB_SOURCE_DIR=/src/meshlab >>"$cache/trixie-build.log" 2>&1 \
+  && in_root nice cmake --build /build/run_filter >>"$cache/trixie-build.log" 2>&1 \
+  || { grep -m5 -A5 'error' "$cache/trixie-build.log" >&2; fail "run_filter did not build (log: $cache/trixie-build.log)"; }
+
+step "the trixie package of the plugin, installed into trixie's MeshLab"
+rm -rf "$root/build/elastica/packages"
+in_root sh -c 'cd /build/elastica && cpack -G DEB -D CPACK_COMPONENTS_ALL=deb_meshlab' >>"$cache/trixie-build.log" 2>&1 \
+  || { tail -n 20 "$cache/trixie-build.log" >&2; fail "cpack failed in the trixie root"; }
+deb=$(cd "$root" && ls build/elastica/packages/meshlab-plugin-elastica_*.deb)
+in_root dpkg-deb -f "/$deb" Package Version Depends
+in_root apt-get install -y -qq --reinstall "/$deb" >/dev/null || fail "apt-get install /$deb failed in the trixie root"
+plugins=/usr/lib/x86_64-linux-gnu/meshlab/plugins
+in_root test -f $plugins/libfilter_elastica.so || fail "the package did not install $plugins/libfilter_elastica.so"
+mkdir -p "$out"
+rm -f "$out"/*.deb
+cp "$root/$deb" "$out/"
+# The Load-Plugins file: the plugin as MeshLab's Help > Plugin Info > Load Plugins takes it, and its note.
+cp "$root/build/elastica/meshlab_plugin/libfilter_elastica.so" "$out/libfilter_elastica.so"
+ml_version=$(in_root dpkg-query -W -f='${Version}' meshlab)
+cat >"$out/libfilter_elastica.so.txt" <<NOTE
+libfilter_elastica.so: the Elastica filters (Discrete Elastica Fairing, Fill Holes with Discrete Elastica,
+Discrete Elastica Curvature) for MeshLab 2022.02, x86-64 Linux, single precision (MESHLAB_SCALAR=float).
+Built from Elastica commit $commit against Debian 13's meshlab $ml_version (its source tree and
+libmeshlab-common.so) with g++ $(in_root g++ -dumpfullversion) and Qt $(in_root dpkg-query -W -f='${Version}' libqt5core5t64 2>/dev/null || in_root dpkg-query -W -f='${Version}' libqt5core5a).
+MeshLab loads a plugin only if it was built for its own version (2022.02) and precision. It also needs
+the same Qt 5 and libstdc++ ABI as that MeshLab, and CHOLMOD (libcholmod5), libgomp1 and libGLEW at
+run time (Debian 13's package names). Load it with Help > Plugin Info > Load Plugins.
+NOTE
+echo "Load-Plugins file: $out/libfilter_elastica.so (+ .txt note)"
+
+# ---------------------------------------------------------------- 3. the filters in MeshLab 2022.02
+step "the fairing and fill filters in MeshLab 2022.02 (run_filter) against elastica run"
+rm -rf "$root/work" && mkdir -p "$root/work"
+ex=/src/elastica/meshlab_plugin/examples
+run() { in_root env OMP_NUM_THREADS=1 HOME=/work "$@"; }
+run /build/elastica/bin/elastica generate icosphere --level 3 --noise 0.05 -o /work/noisy.ply >/dev/null
+run /build/elastica/bin/elastica run -i /work/noisy.ply -o /work/fair_run.ply -s $ex/fairing.mlx
+run xvfb-run -a /build/run_filter/run_filter $plugins /work/noisy.ply /work/fair_meshlab.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \
+  || fail "the fairing filter in MeshLab 2022.02 differs from elastica run (or did not run)"
+run /build/elastica/bin/elastica run -i /src/elastica/data/bunny_flank_hole.ply -o /work/fill_run.ply -s $ex/fill_holes.mlx
+run xvfb-run -a /build/run_filter/run_filter $plugins /src/elastica/data/bunny_flank_hole.ply /work/fill_meshlab.ply $ex/fill_holes.mlx \
+  /work/fill_run.ply 1e-5 || fail "the fill filter in MeshLab 2022.02 differs from elastica run (or did not run)"
+# The hand-written torus cage (data/cages), split three times, faired to the Clifford torus: the screenshot's mesh.
+# MeshLab keeps positions in float: the split cage (written in double) goes through MeshLab first (a
+# script without filters), so that both runs start from the same positions. From the double file the
+# remeshing stages decide differently: 1223 vertices by `elastica run`, 1261 in MeshLab.
+run /build/elastica/bin/elastica subdivide /src/elastica/data/cages/torus_quad_5x5.off --levels 3 -o /work/torus_double.ply >/dev/null
+printf '<!DOCTYPE FilterScript>\n<FilterScript>\n</FilterScript>\n' >"$root/work/no_filter.mlx"
+run xvfb-run -a /build/run_filter/run_filter $plugins /work/torus_double.ply /work/torus.ply /work/no_filter.mlx >/dev/null 2>&1 \
+  || fail "MeshLab 2022.02 could not read and write the torus"
+run /build/elastica/bin/elastica run -i /work/torus.ply -o /work/torus_run.ply -s $ex/fairing.mlx >/dev/null
+run xvfb-run -a /build/run_filter/run_filter $plugins /work/torus.ply /work/torus_meshlab.ply $ex/fairing.mlx /work/torus_run.ply 1e-5 \
+  || fail "the fairing filter in MeshLab 2022.02 differs from elastica run on the torus (or did not run)"
+cp "$root"/work/*_meshlab.ply "$out/"
+
+# ---------------------------------------------------------------- 4. a screenshot of MeshLab 2022.02
+if [[ -n "$shot" ]]; then
+  step "screenshot: MeshLab 2022.02 with the faired torus and the Filters menu"
+  cp "$src/packaging/meshlab2022/screenshot.sh" "$root/work/screenshot.sh"
+  run xvfb-run -a -s "-screen 0 1600x900x24" bash /work/screenshot.sh /work/torus_meshlab.ply /work/shot.png \
+    || fail "no screenshot"
+  mkdir -p "$(dirname "$shot")"
+  cp "$root/work/shot.png" "$shot"
+  echo "screenshot: $shot"
+fi
+# ---------------------------------------------------------------- 5. the Load-Plugins file in MeshLab 2022.02
+step "the Load-Plugins file through MeshLab 2022.02's Help > Plugin Info > Load Plugins"
+# Without the package, MeshLab's plugin folder lacks ours: the filter can only come from the loaded copy.
+in_root apt-get remove -y -qq meshlab-plugin-elastica >/dev/null
+in_root test ! -e $plugins/libfilter_elastica.so || fail "the plugin is still in $plugins"
+cp "$src/packaging/meshlab2022/load_plugins.sh" "$out/libfilter_elastica.so" "$root/work/"
+rm -rf "$root/work/.local"
+run xvfb-run -a -s "-screen 0 1600x900x24" bash /work/load_plugins.sh /work/libfilter_elastica.so /work/load_plugins.png \
+  || fail "Load Plugins did not take the file"
+extra=$(cd "$root" && find work/.local -name libfilter_elastica.so -printf '/%h\n' | head -n1)
+[[ -n "$extra" ]] || fail "MeshLab did not copy the plugin into its extra-plugins folder"
+echo "MeshLab copied it into $extra"
+cp "$root/work/load_plugins.png" "$out/"
+run xvfb-run -a /build/run_filter/run_filter "$plugins:$extra" /work/noisy.ply /work/fair_loaded.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \
+  || fail "the fairing filter of the loaded plugin differs from elastica run (or did not run)"
+step "done"

@@ -1,0 +1,63 @@
+// The flow's remeshing within a vertex budget (flow/mesh_quality_stage.h): the budget's formula,
+// and a curvature-adaptive remeshing that leaves no more moving vertices than it is given.
+#include <elastica/shapes.h>
+#include "flow/mesh_quality_stage.h"
+#include "flow/moving_region.h"
+#include "mesh/self_intersection.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace elastica;
+
+// Edges of 0.4/κ put κ²/(0.4² √3/2) vertices on a unit of area, ∫κ² ≤ E < 8π(g + 3) for a fair
+// shape of genus g, four times that for the widening: on top of the vertices that move now.
+TEST(VertexBudget, IsTheMovingVerticesPlusWhatAFairShapesCurvatureNeeds) {
+  for (int genus : {0, 1, 3}) {
+    const double adaptive = 4 * 8 * M_PI * (genus + 3) / (0.4 * 0.4 * std::sqrt(3.0) / 2);
+    EXPECT_EQ(vertexBudget(0, genus), static_cast<long long>(std::ceil(adaptive))) << genus;
+    EXPECT_EQ(vertexBudget(5000, genus), 5000 + vertexBudget(0, genus)) << genus;
+  }
+}
+
+// A thin torus sampled coarsely (R/r 8, 48×8: κℓ 0.8 to 1.2) wants edges two to three times
+// shorter everywhere for κℓ 0.4: without a bound the curvature-adaptive remeshing multiplies its
+// vertices; within a budget it leaves at most the budget, refines still, and keeps the genus.
+TEST(VertexBudget, AdaptiveRemeshingStaysWithinTheBudget) {
+  const TriMesh thin = shapes::torus(8, 1, 48, 8);
+  MovingRegion free(thin, {}, BoundaryMode::Fixed);
+  ASSERT_TRUE(remeshMovingRegion(free, true));
+  const long long unbounded = free.mesh().vertexCount();
+  const long long budget = 2 * thin.vertexCount();
+  ASSERT_GT(unbounded, budget);  // the bound has something to bound
+  MovingRegion bounded(thin, {}, BoundaryMode::Fixed);
+  ASSERT_TRUE(remeshMovingRegion(bounded, true, 1, budget));
+  EXPECT_LE(bounded.mesh().vertexCount(), budget);
+  EXPECT_GT(bounded.mesh().vertexCount(), thin.vertexCount());
+  EXPECT_EQ(closedGenus(bounded.topology()), 1);
+}
+
+// A torus drawn as a CAD exporter would (R 3, r 1; 8 segments around the axis, 64 around the
+// tube: triangles of aspect up to ~30): splitLongEdges leaves every input vertex where it was, adds
+// vertices on the long edges (the longest at least halved; measured 3.06 → 1.20), keeps the genus,
+// and makes no face cross. (With 6 segments the remesher's flips at the inner hexagon's corners
+// made a face cross, and the split is refused: the mesh stays as it was.)
+TEST(SplitLongEdges, SplitsSliversWithoutMovingTheInput) {
+  const TriMesh slivers = shapes::torus(3, 1, 8, 64);
+  auto longest = [](const TriMesh& m) {
+    double l = 0;
+    for (const Face& f : m.faces)
+      for (int k = 0; k < 3; ++k) l = std::max(l, (m.positions[f[k]] - m.positions[f[(k + 1) % 3]]).norm());
+    return l;
+  };
+  MovingRegion region(slivers, {}, BoundaryMode::Fixed);
+  ASSERT_TRUE(splitLongEdges(region));
+  const TriMesh& split = region.mesh();
+  ASSERT_GT(split.vertexCount(), slivers.vertexCount());
+  for (int v = 0; v < slivers.vertexCount(); ++v) EXPECT_EQ(split.positions[v], slivers.positions[v]) << v;
+  EXPECT_LT(longest(split), 0.5 * longest(slivers));
+  EXPECT_EQ(closedGenus(region.topology()), 1);
+  EXPECT_FALSE(selfIntersects(split));
+}
