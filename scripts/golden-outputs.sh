@@ -2,7 +2,8 @@
 # Behaviour check for refactorings: runs a fixed set of `elastica` commands (every flow, both
 # schemes, subdivision, selection, sliding boundary, edge flips, fill and its stages, curvature,
 # subdivide, .mlx scripts) on bundled and generated meshes, and writes each output mesh and the
-# command's stdout (timing lines removed) into OUTDIR, with a SHA256SUMS file.
+# command's stdout (timing lines removed, the checkout's and the cache's paths replaced by SOURCE
+# and HOME, so two clones compare) into OUTDIR, with a SHA256SUMS file.
 #
 #   scripts/golden-outputs.sh BUILD_BIN_DIR OUTDIR [THREADS]
 #   diff before/SHA256SUMS after/SHA256SUMS     # byte-identical outputs: no difference
@@ -23,10 +24,13 @@ mkdir -p "$out"
 cd "$out"
 rm -f ./*.ply ./*.txt SHA256SUMS
 
+home=${HOME%/}
+[[ -n "$home" ]] || home=/nonexistent-home  # HOME=/ would turn every slash into HOME
 # name, then the command's arguments; stdout goes to NAME.txt without lines that carry seconds.
 run() {
   local name=$1; shift
-  "$exe" "$@" 2>/dev/null | sed -E 's/[0-9.]+ s\b/# s/g; s/[0-9.]+ ms\b/# ms/g' >"$name.txt" \
+  "$exe" "$@" 2>/dev/null | sed -E 's/[0-9.]+ s\b/# s/g; s/[0-9.]+ ms\b/# ms/g' \
+    | sed "s|$root|SOURCE|g; s|$home|HOME|g" >"$name.txt" \
     || echo "exit $?" >>"$name.txt"
 }
 
