@@ -1,10 +1,9 @@
 #include "flow/mesh_quality_stage.h"
 #include "flow/constraints.h"
+#include "flow/region_guard.h"
 #include "mesh/self_intersection.h"
 #include "mesh/patch_remeshing.h"
 
-#include <elastica/curvature.h>
-#include <elastica/energy.h>
 #include <elastica/geometry.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/mesh_quality.h>
@@ -17,19 +16,6 @@
 
 namespace elastica {
 namespace {
-
-// The energy Σ (4H² − 2K) A over the vertices of the flagged faces (the moving region's, with
-// `opt`'s areas and curvature), on the whole mesh.
-double energyOfFaces(const TriMesh& mesh, const std::vector<std::uint8_t>& faces, const FlowOptions& opt) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
-  const Geometry geo = computeGeometry(topo, mesh.positions, opt.area);
-  const Curvature c = computeCurvature(topo, geo, mesh.positions, opt.curvature);
-  std::vector<std::uint8_t> mask(mesh.positions.size(), 0);
-  for (std::size_t f = 0; f < mesh.faces.size(); ++f)
-    if (faces[f])
-      for (int v : mesh.faces[f]) mask[v] = 1;
-  return totalCurvatureEnergy(topo, geo, c, &mask);
-}
 
 // Whether two vertices of the flagged faces sit at one point.
 bool stacksVertices(const TriMesh& mesh, const std::vector<std::uint8_t>& faces) {
@@ -339,7 +325,7 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   constexpr double kRemeshBlowUp = 10;
   if (local) {
     FlowOptions measure;
-    const double before = energyOfFaces(mesh, remeshedRegion, measure), after = energyOfFaces(remeshed, region, measure);
+    const double before = regionEnergy(mesh, remeshedRegion, measure), after = regionEnergy(remeshed, region, measure);
     if (!(after <= kRemeshBlowUp * std::max(std::abs(before), 1.0))) return false;
   }
 

@@ -31,7 +31,55 @@ Defects defectsOf(const TriMesh& mesh) {
   return {topo.nonManifoldVertexCount(), topo.inconsistentEdgeCount()};
 }
 
+// The region's faces and the faces around them (every face that uses one of their vertices), as
+// a piece of their own: its energy over the region's vertices is theirs in the whole mesh (each
+// has its whole fan in the piece), at the cost of the piece.
+struct RegionPiece {
+  TriMesh mesh;
+  std::vector<std::uint8_t> regionVertex;  // per piece vertex: on a region face
+  std::vector<std::uint8_t> near;          // per face of the whole mesh: in the piece
+};
+
+RegionPiece pieceAround(const TriMesh& mesh, const std::vector<std::uint8_t>& selection) {
+  const int nv = mesh.vertexCount(), nf = mesh.faceCount();
+  std::vector<std::uint8_t> inRegion(nv, 0);
+  for (int f = 0; f < nf; ++f)
+    if (selection.empty() || selection[f])
+      for (int v : mesh.faces[f]) inRegion[v] = 1;
+  RegionPiece p;
+  p.near.assign(nf, 0);
+  std::vector<int> local(nv, -1);
+  for (int f = 0; f < nf; ++f) {
+    const Face& face = mesh.faces[f];
+    if (!(inRegion[face[0]] || inRegion[face[1]] || inRegion[face[2]])) continue;
+    p.near[f] = 1;
+    Face g;
+    for (int k = 0; k < 3; ++k) {
+      const int v = face[k];
+      if (local[v] < 0) {
+        local[v] = p.mesh.vertexCount();
+        p.mesh.positions.push_back(mesh.positions[v]);
+        p.regionVertex.push_back(inRegion[v]);
+      }
+      g[k] = local[v];
+    }
+    p.mesh.faces.push_back(g);
+  }
+  return p;
+}
+
+double energyOfPiece(const RegionPiece& p, const FlowOptions& opt) {
+  const Topology topo(p.mesh.vertexCount(), p.mesh.faces);
+  const Geometry geo = computeGeometry(topo, p.mesh.positions, opt.area);
+  const Curvature c = computeCurvature(topo, geo, p.mesh.positions, opt.curvature);
+  return totalCurvatureEnergy(topo, geo, c, &p.regionVertex);
+}
+
 }  // namespace
+
+double regionEnergy(const TriMesh& mesh, const std::vector<std::uint8_t>& faces, const FlowOptions& opt) {
+  return energyOfPiece(pieceAround(mesh, faces), opt);
+}
 
 RegionGuard::RegionGuard(const TriMesh& input, const std::vector<std::uint8_t>& selection, const FlowOptions& opt)
     : opt_(opt), splitsNeighbours_(opt.subdivisionLevels > 0) {
@@ -43,46 +91,17 @@ RegionGuard::RegionGuard(const TriMesh& input, const std::vector<std::uint8_t>& 
   inconsistentEdges_ = d.inconsistentEdges;
 }
 
-// The region's faces and the faces around them (every face that uses one of their vertices), as
-// a piece of their own: its energy over the region's vertices is theirs in the whole mesh (each
-// has its whole fan in the piece), at the cost of the piece.
 RegionGuard::Measure RegionGuard::measure(const TriMesh& mesh, const std::vector<std::uint8_t>& selection) const {
-  const int nv = mesh.vertexCount(), nf = mesh.faceCount();
-  std::vector<std::uint8_t> inRegion(nv, 0), near(nf, 0);
-  for (int f = 0; f < nf; ++f)
-    if (selection.empty() || selection[f])
-      for (int v : mesh.faces[f]) inRegion[v] = 1;
-  std::vector<int> local(nv, -1);
-  TriMesh piece;
-  std::vector<std::uint8_t> regionVertex;
-  for (int f = 0; f < nf; ++f) {
-    const Face& face = mesh.faces[f];
-    if (!(inRegion[face[0]] || inRegion[face[1]] || inRegion[face[2]])) continue;
-    near[f] = 1;
-    Face g;
-    for (int k = 0; k < 3; ++k) {
-      const int v = face[k];
-      if (local[v] < 0) {
-        local[v] = piece.vertexCount();
-        piece.positions.push_back(mesh.positions[v]);
-        regionVertex.push_back(inRegion[v]);
-      }
-      g[k] = local[v];
-    }
-    piece.faces.push_back(g);
-  }
+  const RegionPiece p = pieceAround(mesh, selection);
+  const TriMesh& piece = p.mesh;
   Measure m;
-  const Topology topo(piece.vertexCount(), piece.faces);
-  const Geometry geo = computeGeometry(topo, piece.positions, opt_.area);
-  const Curvature c = computeCurvature(topo, geo, piece.positions, opt_.curvature);
-  m.energy = totalCurvatureEnergy(topo, geo, c, &regionVertex);
-
+  m.energy = energyOfPiece(p, opt_);
   std::vector<std::array<std::uint64_t, 3>> points(piece.positions.size());
   for (std::size_t i = 0; i < points.size(); ++i)
     for (int k = 0; k < 3; ++k) points[i][k] = bits(piece.positions[i][k] + 0.0);  // -0 is 0
   std::sort(points.begin(), points.end());
   for (std::size_t i = 1; i < points.size(); ++i) m.coincident += points[i] == points[i - 1];
-  m.crossing = static_cast<int>(selfIntersectingFaces(mesh, &near).size());
+  m.crossing = static_cast<int>(selfIntersectingFaces(mesh, &p.near).size());
   return m;
 }
 

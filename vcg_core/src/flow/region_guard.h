@@ -15,6 +15,11 @@
 
 namespace elastica {
 
+/// The energy Σ (4H² − 2K) A over the vertices of the flagged faces (`faces` empty: all), with
+/// `opt`'s vertex areas and curvature: what the whole mesh gives those vertices, computed on them
+/// and their neighbouring faces only.
+double regionEnergy(const TriMesh& mesh, const std::vector<std::uint8_t>& faces, const FlowOptions& opt);
+
 /// The input of a region's run, measured once, and the checks of an output against it.
 class RegionGuard {
  public:
