@@ -62,7 +62,8 @@ void addTableOptions(CLI::App& cmd, app::FilterId filter, app::ParamValues& give
         CLI::Option* o =
             cmd.add_option_function<double>(names, [values, key](const double& x) { values->set(key, x); }, help)
                 ->check(range(p));
-        if (core != 0) o->default_str(CLI::detail::to_string(core));
+        if (p.type == app::ParamType::AbsPerc && core == app::kAutoFeatureSize) o->default_str("auto");
+        else if (core != 0) o->default_str(CLI::detail::to_string(core));
         break;
       }
     }

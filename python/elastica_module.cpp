@@ -267,6 +267,7 @@ double typedDecimal(double widened) {
 // A keyword's default as Python writes it: the core's (the CLI's and this module's start).
 std::string pythonDefault(const app::ParamSpec& p) {
   const double x = p.get(app::JobOptions{});
+  if (p.type == app::ParamType::AbsPerc && x == app::kAutoFeatureSize) return "None";  // auto (fairing_amount.h)
   switch (p.type) {
     case app::ParamType::Bool: return x != 0 ? "True" : "False";
     case app::ParamType::Enum: return "'" + p.enumWords.at(static_cast<std::size_t>(x)) + "'";
@@ -305,6 +306,13 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   });
   return py::make_tuple(vertexArray(r.mesh), faceArray(r.mesh),
                         toPython(app::fairingReport(r.report, opt, inV, inF, &r)));
+}
+
+double autoFeatureSizeArrays(const py::object& V, const py::object& F, const py::object& selectedFaces) {
+  const TriMesh mesh = toMesh(V, F);
+  const std::optional<FaceSet> region = selectionFrom(selectedFaces, mesh.faceCount());
+  const double diagonal = boundingBoxDiagonal(mesh.positions);
+  return diagonal > 0 ? app::autoFeatureSize(mesh, region ? &*region : nullptr) / diagonal : 0.0;
 }
 
 py::tuple fillArrays(const py::object& V, const py::object& F, const py::kwargs& kwargs) {
@@ -391,7 +399,9 @@ py::dict filterSpecs() {
           break;
         case app::ParamType::AbsPerc:  // a fraction of the bounding-box diagonal here
           d["type"] = "float";
-          d["default"] = typedDecimal(p.defaultValue);
+          // None: sized from the mesh at hand (auto_feature_size), as the MeshLab dialog does.
+          d["default"] = p.get(app::JobOptions{}) == app::kAutoFeatureSize ? py::object(py::none())
+                                                                            : py::object(py::float_(typedDecimal(p.defaultValue)));
           d["description"] = p.tooltip + " A fraction of the bounding-box diagonal.";
           break;
         case app::ParamType::Enum:
@@ -470,7 +480,9 @@ PYBIND11_MODULE(elastica, m) {
          "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto';\n"
          "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_steps and max_seconds 0: no limit;\n"
          "feature_size: a fairing amount, a fraction of the bounding-box diagonal (bumps smaller than it are\n"
-         "smoothed away, larger shapes kept; report['stop'] 'feature_size'), 0: fair until converged;\n"
+         "smoothed away, larger shapes kept; report['stop'] 'feature_size'); None (the default): 3 short edge\n"
+         "lengths of the faces to fair (auto_feature_size), halved while it would raise the energy; 0: fair\n"
+         "until converged, to the limit shape (a sphere, a Clifford torus);\n"
          "boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
          "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
          "guard), so F_out may differ from F; False keeps the connectivity (`--no-remesh`). flip_edges: flip\n"
@@ -480,6 +492,11 @@ PYBIND11_MODULE(elastica, m) {
          "False to cancel (raises elastica.Error). report: the dict `elastica fair --report` writes (without\n"
          "file names).")
             .c_str());
+  m.def("auto_feature_size", &autoFeatureSizeArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(),
+        "auto_feature_size(V, F, selected_faces=None) -> float\n\n"
+        "The fairing amount fair() takes by default (feature_size=None), as a fraction of the bounding-box\n"
+        "diagonal: 3 times the 25 % quantile of the edge lengths of the faces to fair (the selected ones, else\n"
+        "all). What the MeshLab dialog and Blender's redo panel show as the default feature size.");
   m.def("fill_holes", &fillArrays, py::arg("V"), py::arg("F"),
         (signature("fill_holes", "V, F", app::FilterId::FillHoles, ", progress=None",
                    "(V_out, F_out, new_faces, report)") +

@@ -40,23 +40,26 @@ run() {
 # Every other face of the bunny's first 400: a scattered selection (most vertices stay fixed).
 printf '%s\n' $(seq 0 2 400) >faces.txt
 
-run fair_explicit        fair noisy.ply -o fair_explicit.ply --scheme explicit --max-steps 3000
-run fair_semi            fair noisy.ply -o fair_semi.ply --scheme semi-implicit
-run fair_lmc             fair noisy.ply -o fair_lmc.ply --flow lmc --scheme explicit --max-steps 2000
-run fair_lmc_semi        fair noisy.ply -o fair_lmc_semi.ply --flow lmc --scheme semi-implicit --max-steps 200
-run fair_bilaplacian     fair noisy.ply -o fair_bilaplacian.ply --flow bilaplacian --max-steps 2000
-run fair_subdivide       fair noisy.ply -o fair_subdivide.ply --scheme explicit --subdivide 1 --max-steps 4000
-run fair_subdivide_semi  fair noisy.ply -o fair_subdivide_semi.ply --scheme semi-implicit --subdivide 1
-run fair_torus_semi      fair torus.ply -o fair_torus_semi.ply --scheme semi-implicit --max-steps 150
-run fair_frame_remesh    fair frame.ply -o fair_frame_remesh.ply --scheme semi-implicit --subdivide 1 --remesh --max-steps 300
-run fair_frame_explicit  fair frame.ply -o fair_frame_explicit.ply --scheme explicit --remesh --max-steps 3000 --h2k lambda --area barycentric
-run fair_bunny_selected  fair "$root/data/bunny.ply" -o fair_bunny_selected.ply --selected-faces faces.txt --scheme semi-implicit
-run fair_bunny_sel_expl  fair "$root/data/bunny.ply" -o fair_bunny_sel_expl.ply --selected-faces faces.txt --scheme explicit --max-steps 2000 --no-tangential
-run fair_slide           fair "$root/data/bunny_flank_hole.ply" -o fair_slide.ply --scheme explicit --boundary slide --max-steps 1500
-run fair_slide_semi      fair "$root/data/bunny_flank_hole.ply" -o fair_slide_semi.ply --boundary slide --scheme semi-implicit --max-steps 60
-run fair_color           fair noisy.ply -o fair_color.ply --scheme explicit --max-steps 500 --color-by-mean-curvature --ascii
-run fair_cage_torus      fair "$root/data/cages/torus_quad_5x5.off" -o fair_cage_torus.ply --subdivide 2
-run fair_cage_no_remesh  fair "$root/data/cages/hex_nut.off" -o fair_cage_no_remesh.ply --no-remesh --max-steps 100
+run fair_explicit        fair noisy.ply -o fair_explicit.ply --feature-size 0 --scheme explicit --max-steps 3000
+run fair_semi            fair noisy.ply -o fair_semi.ply --feature-size 0 --scheme semi-implicit
+run fair_lmc             fair noisy.ply -o fair_lmc.ply --feature-size 0 --flow lmc --scheme explicit --max-steps 2000
+run fair_lmc_semi        fair noisy.ply -o fair_lmc_semi.ply --feature-size 0 --flow lmc --scheme semi-implicit --max-steps 200
+run fair_bilaplacian     fair noisy.ply -o fair_bilaplacian.ply --feature-size 0 --flow bilaplacian --max-steps 2000
+run fair_subdivide       fair noisy.ply -o fair_subdivide.ply --feature-size 0 --scheme explicit --subdivide 1 --max-steps 4000
+run fair_subdivide_semi  fair noisy.ply -o fair_subdivide_semi.ply --feature-size 0 --scheme semi-implicit --subdivide 1
+run fair_torus_semi      fair torus.ply -o fair_torus_semi.ply --feature-size 0 --scheme semi-implicit --max-steps 150
+run fair_frame_remesh    fair frame.ply -o fair_frame_remesh.ply --feature-size 0 --scheme semi-implicit --subdivide 1 --remesh --max-steps 300
+run fair_frame_explicit  fair frame.ply -o fair_frame_explicit.ply --feature-size 0 --scheme explicit --remesh --max-steps 3000 --h2k lambda --area barycentric
+run fair_bunny_selected  fair "$root/data/bunny.ply" -o fair_bunny_selected.ply --feature-size 0 --selected-faces faces.txt --scheme semi-implicit
+run fair_bunny_sel_expl  fair "$root/data/bunny.ply" -o fair_bunny_sel_expl.ply --feature-size 0 --selected-faces faces.txt --scheme explicit --max-steps 2000 --no-tangential
+run fair_slide           fair "$root/data/bunny_flank_hole.ply" -o fair_slide.ply --feature-size 0 --scheme explicit --boundary slide --max-steps 1500
+run fair_slide_semi      fair "$root/data/bunny_flank_hole.ply" -o fair_slide_semi.ply --feature-size 0 --boundary slide --scheme semi-implicit --max-steps 60
+run fair_color           fair noisy.ply -o fair_color.ply --feature-size 0 --scheme explicit --max-steps 500 --color-by-mean-curvature --ascii
+run fair_cage_torus      fair "$root/data/cages/torus_quad_5x5.off" -o fair_cage_torus.ply --feature-size 0 --subdivide 2
+# The default: a fairing amount sized from the mesh (app/fairing_amount.h), whole and on a region.
+run fair_amount          fair "$root/data/bunny.ply" -o fair_amount.ply
+run fair_amount_region   fair "$root/data/bunny.ply" -o fair_amount_region.ply --selected-faces faces.txt
+run fair_cage_no_remesh  fair "$root/data/cages/hex_nut.off" -o fair_cage_no_remesh.ply --feature-size 0 --no-remesh --max-steps 100
 run fill_default         fill "$root/data/bunny_flank_hole.ply" -o fill_default.ply --color-by-mean-curvature
 run fill_lmc             fill "$root/data/bunny_flank_hole.ply" -o fill_lmc.ply --flow lmc
 run fill_explicit        fill "$root/data/bunny_flank_hole.ply" -o fill_explicit.ply --scheme explicit --max-steps 3000
@@ -70,17 +73,17 @@ elephant=$(ls -d "${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica
 # elephant's handles for a bounded number of attempts, and a contiguous region of the cow.
 meshes=$(dirname "${elephant:-/nonexistent/x}")
 if [[ -f "$meshes/dino.off" ]]; then
-  run fair_dino          fair "$meshes/dino.off" -o fair_dino.ply
-  run fair_elephant      fair "$meshes/elephant.off" -o fair_elephant.ply --max-steps 150
+  run fair_dino          fair "$meshes/dino.off" -o fair_dino.ply --feature-size 0
+  run fair_elephant      fair "$meshes/elephant.off" -o fair_elephant.ply --feature-size 0 --max-steps 150
   seq 0 999 >cow_region.txt
-  run fair_cow_region    fair "$meshes/cow.off" -o fair_cow_region.ply --selected-faces cow_region.txt
+  run fair_cow_region    fair "$meshes/cow.off" -o fair_cow_region.ply --feature-size 0 --selected-faces cow_region.txt
   rm -f cow_region.txt
 fi
 # Above parallel.h's grain from the start: 40,962 vertices, a few steps of each scheme.
 "$exe" generate icosphere --level 6 --noise 0.02 --seed 3 -o big.ply >/dev/null
-run fair_big_vector      fair big.ply -o fair_big_vector.ply --max-steps 4
-run fair_big_semi        fair big.ply -o fair_big_semi.ply --scheme semi-implicit --max-steps 4
-run fair_big_explicit    fair big.ply -o fair_big_explicit.ply --scheme explicit --max-steps 40
+run fair_big_vector      fair big.ply -o fair_big_vector.ply --feature-size 0 --max-steps 4
+run fair_big_semi        fair big.ply -o fair_big_semi.ply --feature-size 0 --scheme semi-implicit --max-steps 4
+run fair_big_explicit    fair big.ply -o fair_big_explicit.ply --feature-size 0 --scheme explicit --max-steps 40
 rm -f big.ply
 run curvature            curvature "$root/data/bunny.ply" -o curvature.ply
 run curvature_paper      curvature "$root/data/bunny.ply" -o curvature_paper.ply --area barycentric --lambda-fix --ascii

@@ -6,7 +6,9 @@
 #include <elastica/app/filter_spec.h>
 #include <elastica/curvature.h>
 #include <elastica/energy.h>
+#include <elastica/geometry.h>
 #include <elastica/io/mesh_reader.h>
+#include <elastica/mesh_curvature.h>
 #include <elastica/sign_convention.h>
 #include <elastica/vcg_adapter.h>
 #include <elastica/vcg_mesh.h>
@@ -58,6 +60,39 @@ TEST(Cli, CurvatureOfGeneratedIcosphere) {
     EXPECT_NEAR(row[k], 1 / (r * r), 0.01 / (r * r));
     EXPECT_NEAR(row[q], row[h], 1e-5 * row[h]);  // quality carries H (ASCII keeps 6 digits)
   }
+}
+
+// `fair IN -o OUT` with every default on a real scan (the bundled Stanford bunny): a fairer surface
+// of the same model, never the flow's limit shape. The default is a fairing amount sized from the
+// mesh (app/fairing_amount.h): the output keeps the vertices and faces, moves them by at most 1 % of
+// the bounding-box diagonal (RMS), lowers the energy, ends by itself, and says the amount in edge
+// lengths and how far the surface moved.
+TEST(Cli, DefaultsKeepTheModelOfAScan) {
+  ScratchDir dir("cli-defaults");
+  const std::string bunny = std::string(ELASTICA_DATA_DIR) + "/bunny.ply";
+  const CommandResult run = runElastica("fair " + bunny + " -o " + dir.file("f.ply") + " --report " + dir.file("r.json"));
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("(feature_size)"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("mean edge lengths, auto)"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("the vertices moved by"), std::string::npos) << run.output;
+  const TriMesh in = io::readMesh(bunny).mesh, out = io::readMesh(dir.file("f.ply")).mesh;
+  ASSERT_EQ(out.faces, in.faces);
+  double sum = 0;
+  for (int v = 0; v < in.vertexCount(); ++v) sum += (out.positions[v] - in.positions[v]).squaredNorm();
+  const double rms = std::sqrt(sum / in.vertexCount()), diagonal = boundingBoxDiagonal(in.positions);
+  EXPECT_GT(rms, 0);
+  EXPECT_LE(rms, 0.01 * diagonal);
+  EXPECT_LT(measureCurvature(out, {}).energy, measureCurvature(in, {}).energy);
+  std::ifstream report(dir.file("r.json"));
+  const std::string json((std::istreambuf_iterator<char>(report)), std::istreambuf_iterator<char>());
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(json, m, std::regex("\"rms_per_diagonal\": ([0-9.e+-]+)"))) << json;
+  EXPECT_NEAR(std::stod(m[1]), rms / diagonal, 1e-6 * rms / diagonal);
+  EXPECT_NE(json.find("\"feature_size_auto\": true"), std::string::npos) << json;
+  // The limit shape stays one option away.
+  const CommandResult limit = runElastica("fair " + bunny + " -o " + dir.file("g.ply") + " --feature-size 0 --max-steps 3");
+  EXPECT_NE(limit.output.find("(max_steps)"), std::string::npos) << limit.output;
+  EXPECT_EQ(limit.output.find("fairing amount"), std::string::npos) << limit.output;
 }
 
 TEST(Cli, CurvatureOfBundledBunny) {
@@ -180,7 +215,7 @@ TEST(Cli, FairOptionsAndFailures) {
   ASSERT_EQ(runElastica("generate icosphere --level 2 --noise 0.05 -o " + dir.file("n.ply")).exitCode, 0);
   for (const char* flow : {"elastica", "lmc", "bilaplacian"}) {
     const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
-                                          " --scheme explicit --max-steps 300 --flow " + flow +
+                                          " --scheme explicit --feature-size 0 --max-steps 300 --flow " + flow +
                                           " --h2k lambda --no-tangential --color-by-mean-curvature --ascii");
     EXPECT_EQ(run.exitCode, 0) << run.output;
     EXPECT_NE(run.output.find("300 steps"), std::string::npos) << run.output;
@@ -193,7 +228,7 @@ TEST(Cli, FairOptionsAndFailures) {
   EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --flow willmore").exitCode, 2);
   EXPECT_EQ(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --step-factor -1").exitCode, 2);
   // An unstable step is caught: error, non-zero exit, no output.
-  run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --scheme explicit --step-factor 50 --report " +
+  run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --scheme explicit --feature-size 0 --step-factor 50 --report " +
                     dir.file("d.json"));
   EXPECT_EQ(run.exitCode, 1);
   EXPECT_NE(run.output.find("diverged"), std::string::npos) << run.output;
@@ -290,7 +325,7 @@ TEST(Cli, MaxSecondsEndsARunThatWouldNotStop) {
   // asks for a rate below 0. Only the step or the time limit ends it, and the step limit is out
   // of reach, so the run ends at the time limit on any machine, however fast.
   const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
-                                        " --scheme explicit --max-steps 2000000000 --energy-tol 0 --max-seconds 0.5");
+                                        " --scheme explicit --feature-size 0 --max-steps 2000000000 --energy-tol 0 --max-seconds 0.5");
   EXPECT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("(max_seconds)"), std::string::npos) << run.output;
   EXPECT_TRUE(std::filesystem::exists(dir.file("f.ply")));

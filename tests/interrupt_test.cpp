@@ -126,7 +126,7 @@ TEST_P(Interrupt, FairLeavesTheDestinationUntouched) {
   ASSERT_EQ(test::runElastica("generate icosphere --level 3 --noise 0.05 --seed 7 -o " + dir.file("n.ply")).exitCode, 0);
   test::writeText(dir.file("out.ply"), kPrecious);
   Child child({"fair", dir.file("n.ply"), "-o", dir.file("out.ply"), "--report", dir.file("r.json"), "--progress",
-               "--max-steps", "1000000000", "--energy-tol", "0"});
+               "--max-steps", "1000000000", "--energy-tol", "0", "--feature-size", "0"});
   ASSERT_TRUE(child.waitFor("fair: level 0  step", 60)) << child.output();
   const int status = child.interrupt(sig);
   ASSERT_TRUE(WIFSIGNALED(status)) << "exit status " << status << "\n" << child.output();

@@ -147,6 +147,11 @@ TEST(OptionsTable, DefaultsAreTheCoresButTheDialogsBounds) {
         EXPECT_EQ(p.defaultValue, 60);
         continue;
       }
+      if (p.field == "flow.featureSize") {  // "auto" in the core's options; the dialog shows the mesh's amount
+        EXPECT_EQ(p.get(core), kAutoFeatureSize);
+        EXPECT_EQ(p.defaultValue, 0);  // no mesh, no amount
+        continue;
+      }
       const double expected = p.type == ParamType::Float && p.inMeshLab() ? double(float(p.get(core))) : p.get(core);
       EXPECT_EQ(p.defaultValue, expected);
     }
@@ -158,6 +163,7 @@ TEST(OptionsTable, DefaultsAreTheCoresButTheDialogsBounds) {
   // The mesh's facts: Selected is on when the mesh has a selection; featureSize is a length.
   EXPECT_EQ(filterSpec(FilterId::Fairing, {3, 2.0}).param("Selected")->defaultValue, 1);
   EXPECT_EQ(filterSpec(FilterId::Fairing, {0, 2.0}).param("Selected")->defaultValue, 0);
+  EXPECT_EQ(filterSpec(FilterId::Fairing, {0, 2.0, 0.05}).param("featureSize")->defaultValue, 0.05);
 }
 
 // Every row: a value in range reaches its field (read back by the row) and leaves the others at

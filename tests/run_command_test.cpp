@@ -75,7 +75,10 @@ TEST_F(RunCommand, MissingParametersWarnAndTakeDefaults) {
                            "Selected", "colorByMeanCurvature"})
     EXPECT_NE(r.output.find("does not set '" + std::string(name) + "'; using its default"), std::string::npos) << name;
   EXPECT_EQ(r.output.find("does not set 'maxSteps'"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find(" 5 steps"), std::string::npos) << r.output;  // the script's maxSteps was used (the default scheme converges in ~20)
+  // featureSize took the mesh's amount, as MeshLab's dialog shows it: its four steps end the run
+  // before the script's maxSteps (5) does.
+  EXPECT_NE(r.output.find(" 4 steps"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(faired to the feature size)"), std::string::npos) << r.output;
   EXPECT_TRUE(std::filesystem::exists(output));
 }
 
@@ -146,6 +149,7 @@ TEST_F(RunCommand, FiltersRunInOrder) {
   const std::string fair =
       " <filter name=\"Discrete Elastica Fairing\">\n"
       "  <Param type=\"RichEnum\" name=\"scheme\" value=\"1\"/>\n"
+      "  <Param type=\"RichAbsPerc\" name=\"featureSize\" value=\"0\"/>\n"
       " </filter>\n";
   const CommandResult r = runScript(script(std::string(fair) + kCurvatureFilter));
   ASSERT_EQ(r.exitCode, 0) << r.output;

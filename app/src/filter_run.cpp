@@ -2,6 +2,7 @@
 #include <elastica/app/filter_run.h>
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
+#include <elastica/geometry.h>
 #include <elastica/hole_filling.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/topology.h>
@@ -120,24 +121,67 @@ FilterOutputs filterOutputs(FilterId id, const JobOptions& job) {
   return {};
 }
 
-FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const FlowOptions& opt, bool outputCurvature,
-                         RepairHints hints) {
+FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const FlowOptions& requested,
+                         bool outputCurvature, RepairHints hints) {
+  FlowOptions opt = requested;
+  FairingResult r;
+  const FaceSet* faces = region ? &*region : nullptr;
+  // "auto" is no amount where an amount has no meaning: the bilaplacian's time has no length unit,
+  // and subdivision levels ask for coarse to fine, to the limit shape.
+  r.amount.automatic = opt.featureSize == kAutoFeatureSize;
+  if (r.amount.automatic)
+    opt.featureSize = opt.flow == FlowType::Bilaplacian || opt.subdivisionLevels > 0 ? 0 : autoFeatureSize(mesh, faces);
   JobOptions job;
   job.flow = opt;
   checkOptions(FilterId::Fairing, job);
   checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, hints);
   if (region && region->faces.empty()) throw InvalidInputError("the region to fair has no faces");
   const bool selected = region.has_value();
-  FairingResult r;
   const std::vector<Face> inputFaces = mesh.faces;
+  const std::vector<Vec3> inputPositions = mesh.positions;
   const int inVertices = mesh.vertexCount();
+  r.diagonal = boundingBoxDiagonal(mesh.positions);
   const CurvatureMeasureOptions measure{opt.area, opt.curvature};
   r.meshEnergyBefore = measureCurvature(mesh, measure).energy;
-  r.report = selected ? fair(mesh, *region, opt) : fair(mesh, opt);
+  const double meanEdge = meanFaceEdge(mesh, faces);
+  // A fairing amount that raises the energy of what it fairs has collapsed a feature smaller than
+  // it into a needle (the principal part shrinks what it smooths): half of it, and so on. A region
+  // run says so itself (its guard gives the input back, StopReason::Unchanged).
+  TriMesh work = opt.featureSize > 0 ? mesh : TriMesh{};
+  for (;;) {
+    r.report = selected ? fair(mesh, *region, opt) : fair(mesh, opt);
+    if (r.report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
+    if (!(opt.featureSize > 0)) break;
+    const bool rose = selected ? r.report.stop == StopReason::Unchanged
+                               : !(measureCurvature(mesh, measure).energy < r.meshEnergyBefore);
+    if (!rose) break;
+    if (r.amount.halvings == kAmountHalvings) {
+      mesh = std::move(work);
+      r.report.stop = StopReason::Unchanged;
+      r.report.refusedBecause = "every fairing amount down to " + number(opt.featureSize, "%.6g") +
+                                " raised the energy";
+      r.report.keptStage = -1;
+      break;
+    }
+    ++r.amount.halvings;
+    opt.featureSize /= 2;
+    mesh = work;
+  }
+  r.amount.featureSize = opt.featureSize > 0 ? opt.featureSize : 0;
+  r.amount.edges = meanEdge > 0 ? r.amount.featureSize / meanEdge : 0;
   const FlowReport& report = r.report;
-  if (report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
 
   r.connectivityChanged = mesh.faces != inputFaces;
+  if (!r.connectivityChanged && mesh.vertexCount() == inVertices) {
+    double sum = 0, largest = 0;
+    for (int v = 0; v < inVertices; ++v) {
+      const double d = (mesh.positions[v] - inputPositions[v]).norm();
+      sum += d * d;
+      largest = std::max(largest, d);
+    }
+    r.movedRms = std::sqrt(sum / std::max(inVertices, 1));
+    r.movedMax = largest;
+  }
   r.outputCurvature = outputCurvature;
   if (outputCurvature) r.curvature = measureCurvature(mesh, measure);
   r.meshEnergyAfter = outputCurvature ? r.curvature.energy : measureCurvature(mesh, measure).energy;
@@ -163,6 +207,21 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
                        ": " + number(report.energyInitial, "%.9g") + " -> " + number(report.energyFinal, "%.9g");
     r.log.push_back({Severity::Info, r.flowEnergyLine});
   }
+  if (r.amount.featureSize > 0) {
+    const int h = r.amount.halvings;
+    r.amountLine = "fairing amount: feature size " + number(r.amount.featureSize, "%.6g") + " (" +
+                   number(r.amount.edges, "%.3g") + " mean edge lengths" + (r.amount.automatic ? ", auto" : "") + ")";
+    if (h > 0)
+      r.amountLine += ", halved " + std::to_string(h) + (h == 1 ? " time" : " times") +
+                      ": a larger one raised the energy (a feature smaller than it collapsed)";
+    r.log.push_back({h > 0 ? Severity::Warning : Severity::Info, r.amountLine});
+  }
+  if (r.movedRms >= 0 && r.diagonal > 0) {
+    r.movedLine = "the vertices moved by " + number(100 * r.movedRms / r.diagonal, "%.3g") +
+                  " % of the bounding-box diagonal (RMS over the vertices), at most " +
+                  number(100 * r.movedMax / r.diagonal, "%.3g") + " %";
+    r.log.push_back({Severity::Info, r.movedLine});
+  }
   r.mesh = std::move(mesh);
   if (selected) r.region = FaceSet(report.regionFaces);
   return r;
@@ -178,7 +237,22 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> selection, const P
   const bool selected = job.selected;
   FlowOptions& opt = job.flow;
   opt.progress = flowProgress(progress, opt);
+  // The dialog always carries a feature size (the mesh's amount by default), so a choice that an
+  // amount does not go with is not refused here as the CLI refuses it: the Bilaplacian's time has
+  // no length unit (it runs to its own stop), and under the vector scheme an amount keeps the
+  // connectivity (subdivision levels would be left unused: say so).
+  std::vector<LogLine> notes;
+  if (opt.flow == FlowType::Bilaplacian && opt.featureSize > 0) {
+    opt.featureSize = 0;
+    notes.push_back({Severity::Info, "the Bilaplacian flow takes no feature size (its time has no length unit); "
+                                     "it ran to its own stop"});
+  }
+  if (opt.subdivisionLevels > 0 && opt.featureSize > 0 &&
+      (opt.scheme == Scheme::Automatic || opt.scheme == Scheme::Vector))
+    notes.push_back({Severity::Warning, "the subdivision levels were not used: a feature size keeps the mesh's "
+                                        "vertices; set 'Feature size' to 0 to fair coarse to fine, to the limit shape"});
   FairingResult r = runFairing(std::move(mesh), std::move(selection), opt, job.colorByMeanCurvature, RepairHints::MeshLab);
+  r.log.insert(r.log.begin(), notes.begin(), notes.end());
   const std::string warning = limitWarning(r.report.stop, filterSpec(FilterId::Fairing, {}), opt);
   if (!warning.empty()) r.log.push_back({Severity::Warning, warning});
   const int levels = r.report.stages.empty() ? 0 : r.report.stages.back().level;

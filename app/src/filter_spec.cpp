@@ -190,12 +190,20 @@ FilterSpec fairing(const MeshFacts& mesh) {
   auto flow = [](auto& j) -> auto& { return j.flow; };
   std::vector<ParamSpec>& p = s.params;
   append(p, flowRows("flow.", flow));
+  // Default "auto" on every face (fairing_amount.h): the dialogs show the length it stands for on
+  // the mesh at hand (MeshFacts::featureSize), the CLI and Python leave it to runFairing.
   ParamSpec feature = numberRow(
       ParamType::AbsPerc, "flow.featureSize", {"featureSize", "--feature-size", "feature_size", "feature_size"},
       [](auto& j) -> auto& { return j.flow.featureSize; }, 0, kUnbounded, "Feature size",
-      "Smooth away bumps smaller than this, keep larger shapes. 0: fair until converged.",
-      "a fairing amount: smooth away bumps smaller than this fraction of the bounding-box diagonal (e.g. 0.03), keep "
-      "larger shapes, then stop (default 0: fair until converged)");
+      "Smooth away bumps smaller than this, keep larger shapes (one to two edge lengths remove a scan's "
+      "noise). Default: 3 short edge lengths of the faces to fair. 0: fair to the limit shape (a sphere, a "
+      "Clifford torus), which changes the whole model.",
+      "a fairing amount: smooth away bumps smaller than this fraction of the bounding-box diagonal, keep larger "
+      "shapes, then stop; one to two edge lengths remove a scan's noise, and the output says how many edge "
+      "lengths it was and how far the vertices moved. Default auto: 3 short edge lengths (the 25 % quantile) of the "
+      "faces to fair, halved while it would raise the energy. 0: fair until converged, to the limit shape (a "
+      "sphere, a Clifford torus)");
+  feature.defaultValue = mesh.featureSize;
   p.push_back(feature);
   p.push_back(numberRow(
       ParamType::Int, "flow.subdivisionLevels", {"subdivisionLevels", "--subdivide", "subdivide", "subdivide"},

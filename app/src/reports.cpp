@@ -64,7 +64,21 @@ nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int in
   nlohmann::json j = toJson(r);
   j["input"] = {{"vertices", inputVertices}, {"faces", inputFaces}};
   j["flow"] = nameOf(opt.flow);
-  if (opt.featureSize > 0) j["feature_size"] = opt.featureSize;  // the length (the CLI's fraction × diagonal)
+  // The amount as a length (the CLI's fraction × diagonal): the one the run used, when known.
+  if (!result && opt.featureSize > 0) j["feature_size"] = opt.featureSize;
+  if (result && result->amount.featureSize > 0) {
+    j["feature_size"] = result->amount.featureSize;
+    j["feature_size_edges"] = result->amount.edges;
+    j["feature_size_auto"] = result->amount.automatic;
+    j["feature_size_halvings"] = result->amount.halvings;
+  }
+  if (result && result->movedRms >= 0) {
+    const double d = result->diagonal > 0 ? result->diagonal : 1;
+    j["moved"] = {{"rms", result->movedRms},
+                  {"max", result->movedMax},
+                  {"rms_per_diagonal", result->movedRms / d},
+                  {"max_per_diagonal", result->movedMax / d}};
+  }
   if (result) {
     j["output"] = {{"vertices", result->mesh.vertexCount()}, {"faces", result->mesh.faceCount()}};
     j["mesh_energy_before"] = result->meshEnergyBefore;

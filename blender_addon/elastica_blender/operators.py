@@ -63,6 +63,8 @@ def _property(p):
     if p["type"] == "int":
         bounds = {k: int(min(max(v, -2**31), 2**31 - 1)) for k, v in bounds.items()}
         return IntProperty(default=int(p["default"]), **bounds, **common)
+    if p["default"] is None:  # sized from the mesh at each run (the feature size's "auto"): not remembered
+        return FloatProperty(default=0.0, precision=4, step=1, options={'SKIP_SAVE'}, **bounds, **common)
     return FloatProperty(default=p["default"], precision=4, step=1, **bounds, **common)
 
 
@@ -277,6 +279,10 @@ class MESH_OT_elastica_fair_base(ElasticaOperator):
             selection = arrays.selected_triangles(me)
             if not selection.any():
                 raise ValueError("no faces selected: select the faces to fair (or use Object Mode for the whole mesh)")
+        # The default feature size is the mesh's own (elastica.auto_feature_size), as MeshLab's dialog
+        # shows it; set here, the redo panel shows the amount used and reruns with it.
+        if not self.properties.is_property_set("feature_size") and self.subdivide == 0 and self.flow != "bilaplacian":
+            self.feature_size = elastica.auto_feature_size(arrays.V, arrays.F, selection)
         kwargs = self.keywords()
         keep = self.keep_connectivity and kwargs["subdivide"] == 0
         if not keep:

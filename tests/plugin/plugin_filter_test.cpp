@@ -7,6 +7,8 @@
 #include <elastica/app/filter_run.h>
 #include <elastica/app/filter_apply.h>
 #include <elastica/app/filter_spec.h>
+#include <elastica/geometry.h>
+#include <elastica/io/mesh_reader.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/vcg_adapter.h>
 
@@ -15,6 +17,7 @@
 #include <QTextDocument>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace {
@@ -180,6 +183,7 @@ TEST_F(PluginFilter, TimeLimitStopsWithAWarningAndProgressMoves) {
   const Snapshot before = snapshot(mm->cm);
   RichParameterList params = defaults("Discrete Elastica Fairing");
   params.setValue("scheme", EnumValue(0));  // explicit: runs far past a short limit
+  params.setValue("featureSize", AbsPercValue(0.f));  // to the limit shape
   params.setValue("energyTolerance", FloatValue(0.f));
   params.setValue("maxSeconds", FloatValue(1.f));
   static std::vector<int> percents;
@@ -335,7 +339,8 @@ TEST_F(PluginFilter, FairingMovesVerticesAndLogsEnergy) {
   fillNoisySphere();
   const Snapshot before = snapshot(mm->cm);
   RichParameterList params = defaults("Discrete Elastica Fairing");
-  params.setValue("maxSteps", IntValue(5));  // the default (semi-implicit) scheme converges in ~20
+  params.setValue("maxSteps", IntValue(5));  // the flow to the limit shape takes ~20
+  params.setValue("featureSize", AbsPercValue(0.f));
   params.setValue("colorByMeanCurvature", BoolValue(true));
   ASSERT_TRUE(plugin.applyFilter(action("Discrete Elastica Fairing"), doc, params, nullptr)) << plugin.errorMsg().toStdString();
   const Snapshot after = snapshot(mm->cm);
@@ -345,6 +350,34 @@ TEST_F(PluginFilter, FairingMovesVerticesAndLogsEnergy) {
   EXPECT_TRUE(mm->hasDataMask(MeshModel::MM_VERTQUALITY));
   EXPECT_TRUE(logLines(log).join("\n").contains("stopped at maxSteps")) << logLines(log).join("\n").toStdString();
   EXPECT_TRUE(logLines(log).join("\n").contains("raise 'Maximum steps' (maxSteps)")) << logLines(log).join("\n").toStdString();
+}
+
+// The dialog's defaults on a real scan (the bundled Stanford bunny): OK gives a fairer surface of
+// the same model, as MeshLab's own smoothing filters do, never the flow's limit shape. The
+// feature size shown is the mesh's own amount (autoFeatureSize); the vertices move by at most 1 %
+// of the bounding-box diagonal (RMS), the energy goes down, the run ends by itself, the log says
+// how far the surface moved.
+TEST_F(PluginFilter, DefaultsKeepTheModelOfAScan) {
+  const elastica::TriMesh bunny = elastica::io::readMesh(std::string(ELASTICA_DATA_DIR) + "/bunny.ply").mesh;
+  fill(mm->cm, bunny);
+  const Snapshot before = snapshot(mm->cm);
+  const RichParameterList params = defaults("Discrete Elastica Fairing");
+  const double amount = elastica::app::autoFeatureSize(bunny, nullptr);
+  EXPECT_NEAR(params.getAbsPerc("featureSize"), amount, 1e-5 * amount);
+  ASSERT_TRUE(plugin.applyFilter(action("Discrete Elastica Fairing"), doc, params, nullptr)) << plugin.errorMsg().toStdString();
+  const Snapshot after = snapshot(mm->cm);
+  EXPECT_EQ(after.faces, before.faces);
+  double sum = 0;
+  for (std::size_t i = 0; i < after.coords.size(); ++i) sum += std::pow(double(after.coords[i]) - before.coords[i], 2);
+  const double rms = std::sqrt(sum / bunny.vertexCount()), diagonal = elastica::boundingBoxDiagonal(bunny.positions);
+  EXPECT_GT(rms, 0);
+  EXPECT_LE(rms, 0.01 * diagonal);
+  const double energyAfter = elastica::measureCurvature(elastica::toTriMesh(mm->cm), {}).energy;
+  EXPECT_LT(energyAfter, elastica::measureCurvature(bunny, {}).energy);
+  const std::string text = logLines(log).join("\n").toStdString();
+  EXPECT_NE(text.find("faired to the feature size"), std::string::npos) << text;
+  EXPECT_NE(text.find("the vertices moved by"), std::string::npos) << text;
+  EXPECT_EQ(text.find("warning"), std::string::npos) << text;
 }
 
 // Hole filling appends: the original vertices keep their positions and colours, the new faces
@@ -404,6 +437,7 @@ TEST_F(PluginFilter, SelectedFairKeepsTheRegionSelectedAndNoVertex) {
     RichParameterList params = defaults("Discrete Elastica Fairing");
     ASSERT_TRUE(params.getBool("Selected"));
     params.setValue("subdivisionLevels", IntValue(levels));
+    if (levels > 0) params.setValue("featureSize", AbsPercValue(0.f));  // coarse to fine goes to the limit shape
     ASSERT_TRUE(plugin.applyFilter(action("Discrete Elastica Fairing"), doc, params, nullptr)) << plugin.errorMsg().toStdString();
     const std::string text = logLines(log).join("\n").toStdString();
     double areaAfter = 0;

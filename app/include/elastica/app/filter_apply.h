@@ -22,6 +22,13 @@ MeshFacts meshFacts(const VcgMeshT& m) {
   for (const auto& v : m.vert)
     if (!v.IsD()) box.Add(v.cP());
   facts.diagonal = box.IsNull() ? 0.0 : double(box.Diag());
+  // The amount "auto" stands for (autoFeatureSize): over the selected faces if any, else all.
+  std::vector<double> lengths;
+  for (const auto& f : m.face) {
+    if (f.IsD() || (facts.selectedFaces > 0 && !f.IsS())) continue;
+    for (int k = 0; k < 3; ++k) lengths.push_back(double(vcg::Distance(f.cV(k)->cP(), f.cV((k + 1) % 3)->cP())));
+  }
+  facts.featureSize = autoFeatureSize(lengths);
   return facts;
 }
 

@@ -84,13 +84,27 @@ struct FairingResult {
   /// The flow's own energies when its start differs from the input's (after refinement or
   /// remeshing, or over a region); also in `log`. Empty otherwise.
   std::string flowEnergyLine;
+  /// The fairing amount the run used (fairing_amount.h), if it had one.
+  struct Amount {
+    double featureSize = 0;  ///< the length used (after halvings); 0: none, the flow ran to its limit shape
+    double edges = 0;        ///< featureSize in mean edge lengths of the faces to fair
+    bool automatic = false;  ///< sized by autoFeatureSize ("auto", every face's default)
+    int halvings = 0;        ///< times it was halved because it raised the energy (kAmountHalvings)
+  } amount;
+  /// How far the vertices moved, RMS and largest, when the run kept the connectivity (-1 when it
+  /// did not), and the input's bounding-box diagonal to state them in.
+  double movedRms = -1, movedMax = -1, diagonal = 0;
+  /// The amount and the distance moved as `log` words them (empty when not known), for faces that
+  /// print their own summary.
+  std::string amountLine, movedLine;
 };
 
 /// Fairs `mesh` with `opt`: the whole mesh without a `region`, else the region's faces. With
 /// `outputCurvature`, also measures the result (opt.area and opt.curvature). The one fairing path
 /// of every face. Checks what the faces' paths check first: the options against the table's
 /// ranges (checkOptions), the mesh (checkedTopology, non-manifold vertices refused, with `hints`)
-/// and a region with faces.
+/// and a region with faces. opt.featureSize kAutoFeatureSize is sized from the faces to fair
+/// (autoFeatureSize); an amount that raises the energy is halved and run again (kAmountHalvings).
 /// @throws InvalidInputError (bad options or mesh, an empty region, nothing can move, ...),
 ///         FlowDivergedError (with the report so far), Error (the progress callback cancelled).
 FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const FlowOptions& opt, bool outputCurvature,

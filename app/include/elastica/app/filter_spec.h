@@ -10,6 +10,7 @@
 // list every one. Add a row only when an issue asks for it, and never rename one.
 #pragma once
 
+#include <elastica/app/fairing_amount.h>
 #include <elastica/flow.h>
 #include <elastica/hole_filling.h>
 #include <elastica/mesh_curvature.h>
@@ -41,7 +42,10 @@ const char* richTypeName(ParamType t);
 
 /// What a filter's parameters set: the core's options of its run and what the face does around it.
 struct JobOptions {
-  FlowOptions flow;                    ///< Discrete Elastica Fairing
+  JobOptions() { flow.featureSize = kAutoFeatureSize; }
+  /// Discrete Elastica Fairing; its featureSize starts "auto" (fairing_amount.h), which runFairing
+  /// sizes from the mesh: a default run keeps the model.
+  FlowOptions flow;
   HoleFillOptions fill;                ///< Fill Holes with Discrete Elastica
   CurvatureMeasureOptions curvature;   ///< Discrete Elastica Curvature
   bool selected = false;               ///< fairing: only the selected faces move
@@ -107,6 +111,9 @@ struct FilterSpec {
 struct MeshFacts {
   int selectedFaces = 0;
   double diagonal = 0;  ///< of the bounding box (RichAbsPerc's 100 %)
+  /// The fairing amount "auto" stands for on this mesh (autoFeatureSize over the selected faces if
+  /// any, else all): the dialog's default feature size. 0 when unknown.
+  double featureSize = 0;
 };
 
 /// Every filter, in menu order, with defaults for `mesh`.
