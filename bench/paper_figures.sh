@@ -56,8 +56,8 @@ cage_args=(frame --segments 2,1 --window 4 --level 1)
 # shrinks the tubes until they collapse (the divergence guard stops it; the script measures when),
 # so it gets a step budget that stops it while there is still a shape to look at.
 declare -A stage_opts=(
-  [elastica]="--max-seconds $seconds"
-  [lmc]="--scheme explicit --max-steps $lmc_steps"
+  [elastica]="--feature-size 0 --max-seconds $seconds"
+  [lmc]="--feature-size 0 --scheme explicit --max-steps $lmc_steps"
   [bilaplacian]="--scheme explicit --max-steps 1500"
 )
 declare -A scheme_name=([elastica]="semi-implicit, remeshing (default)" [lmc]="explicit (paper)" [bilaplacian]="explicit (paper)")

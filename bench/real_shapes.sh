@@ -53,7 +53,7 @@ table=$tmp/table.md
     nv=$(awk '!/^#/ && NF {n++; if (n == 2) {print $1; exit}}' "$f")
     for s in $schemes; do
       out=$tmp/$name-$s.ply
-      "$bin/elastica" fair "$f" -o "$out" --scheme "$s" --max-seconds 60 --report "$tmp/r.json" >/dev/null 2>&1 || true
+      "$bin/elastica" fair "$f" -o "$out" --feature-size 0 --scheme "$s" --max-seconds 60 --report "$tmp/r.json" >/dev/null 2>&1 || true
       row=$(/usr/bin/python3 -c '
 import json,sys; r=json.load(open(sys.argv[1]))
 print("%d (%d) | %.1f | %s | %.0f → %.2f" % (r["steps"], r["rejected_steps"], r["seconds"], r["stop"], r["energy_initial"], r["energy_output"]))' "$tmp/r.json")
@@ -81,7 +81,7 @@ sphere. Stops: `converged` (the shape stopped changing at the flow's time scale)
 component with two triangular holes).
 
 TEXT
-    echo "Commit $commit (with the working tree's changes, if any), $(date -u +%Y-%m-%dT%H:%MZ), load average at the end of the run $(cut -d' ' -f1-3 /proc/loadavg); one run per row, 60 s limit, \`elastica fair IN -o OUT --scheme S --max-seconds 60\`."
+    echo "Commit $commit (with the working tree's changes, if any), $(date -u +%Y-%m-%dT%H:%MZ), load average at the end of the run $(cut -d' ' -f1-3 /proc/loadavg); one run per row, 60 s limit, \`elastica fair IN -o OUT --feature-size 0 --scheme S --max-seconds 60\` (to the limit shape)."
     echo
     cat "$table"
     echo "<!-- /real-shapes -->"

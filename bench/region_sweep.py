@@ -171,7 +171,7 @@ def main():
                 cross_in = crossing_faces(args.mesh_check, Vin, F, tmp)
                 t0 = time.time()
                 try:
-                    V3, F3, rep = elastica.fair(Vin, F, sel, max_seconds=args.max_seconds)
+                    V3, F3, rep = elastica.fair(Vin, F, sel, feature_size=0, max_seconds=args.max_seconds)
                 except Exception as ex:  # noqa: BLE001 - a sweep reports every failure and goes on
                     print(f"{name:4} {len(sel):6} {time.time() - t0:8.2f}  error: {ex}")
                     continue

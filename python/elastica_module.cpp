@@ -480,7 +480,7 @@ PYBIND11_MODULE(elastica, m) {
          "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto';\n"
          "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_steps and max_seconds 0: no limit;\n"
          "feature_size: a fairing amount, a fraction of the bounding-box diagonal (bumps smaller than it are\n"
-         "smoothed away, larger shapes kept; report['stop'] 'feature_size'); None (the default): 3 short edge\n"
+         "smoothed away, larger shapes kept; report['stop'] 'feature_size'); None (the default): 2 short edge\n"
          "lengths of the faces to fair (auto_feature_size), halved while it would raise the energy; 0: fair\n"
          "until converged, to the limit shape (a sphere, a Clifford torus);\n"
          "boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
@@ -495,7 +495,7 @@ PYBIND11_MODULE(elastica, m) {
   m.def("auto_feature_size", &autoFeatureSizeArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(),
         "auto_feature_size(V, F, selected_faces=None) -> float\n\n"
         "The fairing amount fair() takes by default (feature_size=None), as a fraction of the bounding-box\n"
-        "diagonal: 3 times the 25 % quantile of the edge lengths of the faces to fair (the selected ones, else\n"
+        "diagonal: 2 times the 25 % quantile of the edge lengths of the faces to fair (the selected ones, else\n"
         "all). What the MeshLab dialog and Blender's redo panel show as the default feature size.");
   m.def("fill_holes", &fillArrays, py::arg("V"), py::arg("F"),
         (signature("fill_holes", "V, F", app::FilterId::FillHoles, ", progress=None",

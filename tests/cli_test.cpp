@@ -95,6 +95,25 @@ TEST(Cli, DefaultsKeepTheModelOfAScan) {
   EXPECT_EQ(limit.output.find("fairing amount"), std::string::npos) << limit.output;
 }
 
+// A thin tube (a torus of radius ratio 10, eight edges around its tube) is already fair at the scale
+// of its edges, and the principal part of the flow shrinks a thin tube: every amount raises its
+// energy. The default amount is halved four times and then gives the mesh back unchanged, saying
+// so; an amount the user chose runs as chosen, with a warning that the energy rose.
+TEST(Cli, AnAmountThatRaisesTheEnergy) {
+  ScratchDir dir("cli-amount-rises");
+  ASSERT_EQ(runElastica("generate torus --major 3 --minor 0.3 --segments 64,8 -o " + dir.file("t.ply")).exitCode, 0);
+  const CommandResult automatic = runElastica("fair " + dir.file("t.ply") + " -o " + dir.file("a.ply"));
+  ASSERT_EQ(automatic.exitCode, 0) << automatic.output;
+  EXPECT_NE(automatic.output.find("(unchanged)"), std::string::npos) << automatic.output;
+  EXPECT_NE(automatic.output.find("auto), halved 4 times"), std::string::npos) << automatic.output;
+  EXPECT_EQ(io::readMesh(dir.file("a.ply")).mesh.positions, io::readMesh(dir.file("t.ply")).mesh.positions);
+  const CommandResult chosen = runElastica("fair " + dir.file("t.ply") + " -o " + dir.file("c.ply") + " --feature-size 0.02");
+  ASSERT_EQ(chosen.exitCode, 0) << chosen.output;
+  EXPECT_NE(chosen.output.find("(feature_size)"), std::string::npos) << chosen.output;
+  EXPECT_EQ(chosen.output.find("halved"), std::string::npos) << chosen.output;
+  EXPECT_NE(chosen.output.find("the energy rose"), std::string::npos) << chosen.output;
+}
+
 TEST(Cli, CurvatureOfBundledBunny) {
   ScratchDir dir("cli-bunny");
   const CommandResult run = runElastica("curvature " + std::string(ELASTICA_DATA_DIR) + "/bunny.ply -o " + dir.file("b.ply") + " --ascii");

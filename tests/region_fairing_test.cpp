@@ -221,6 +221,48 @@ TEST_P(ScanRegionFairing, RegionAtTheOpenBorder) {
   expectRegionKept(noisy, region, opt, std::string(GetParam().mesh) + " border region");
 }
 
+// The region around one of every 97 vertices (the 1 % of faces nearest it) whose faces most often
+// face away from the region's mean normal: a thin part (the lion's ear, the devil's horn or
+// finger), where the selection wraps round both sides.
+std::vector<int> thinPartRegion(const TriMesh& m, int& facingAway) {
+  std::vector<Vec3> normal(m.faces.size());
+  for (std::size_t f = 0; f < m.faces.size(); ++f) {
+    const Face& t = m.faces[f];
+    normal[f] = (m.positions[t[1]] - m.positions[t[0]]).cross(m.positions[t[2]] - m.positions[t[0]]).normalized();
+  }
+  std::vector<int> best;
+  facingAway = -1;
+  for (int v = 0; v < m.vertexCount(); v += 97) {
+    const std::vector<int> region = regionAround(m, m.positions[v], 0.01);
+    Vec3 mean = Vec3::Zero();
+    for (int f : region) mean += normal[f];
+    int away = 0;
+    for (int f : region) away += normal[f].dot(mean.normalized()) < -0.3;
+    if (away > facingAway) facingAway = away, best = region;
+  }
+  return best;
+}
+
+// A region that runs through a thin part, noisy: both sides of the part move, and the flow must
+// neither push one side through the other nor leave the part broken; as a fairing amount and to
+// the limit shape.
+TEST_P(ScanRegionFairing, RegionThroughAThinPart) {
+  const TriMesh scan = readSample(GetParam().mesh);
+  int facingAway = 0;
+  const std::vector<int> region = thinPartRegion(scan, facingAway);
+  EXPECT_GE(facingAway, static_cast<int>(region.size()) / 10) << "the region wraps round a thin part";
+  Rng rng(13);
+  TriMesh noisy = scan;
+  addNoise(noisy, region, 0.1 * meanEdge(scan), rng);
+  FlowOptions limit;
+  limit.maxSteps = 200;
+  expectRegionKept(noisy, region, limit, std::string(GetParam().mesh) + " thin part");
+  FlowOptions amount;
+  amount.featureSize = 2 * meanEdge(scan);
+  const FlowReport r = expectRegionKept(noisy, region, amount, std::string(GetParam().mesh) + " thin part, amount");
+  EXPECT_TRUE(r.stop == StopReason::FeatureSize || r.stop == StopReason::Unchanged);
+}
+
 INSTANTIATE_TEST_SUITE_P(LibcgalDemo, ScanRegionFairing,
                          ::testing::Values(ScanRegions{"lion-head.off", 8}, ScanRegions{"mannequin-devil.off", 8}),
                          [](const ::testing::TestParamInfo<ScanRegions>& info) {

@@ -144,14 +144,16 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   const CurvatureMeasureOptions measure{opt.area, opt.curvature};
   r.meshEnergyBefore = measureCurvature(mesh, measure).energy;
   const double meanEdge = meanFaceEdge(mesh, faces);
-  // A fairing amount that raises the energy of what it fairs has collapsed a feature smaller than
-  // it into a needle (the principal part shrinks what it smooths): half of it, and so on. A region
-  // run says so itself (its guard gives the input back, StopReason::Unchanged).
-  TriMesh work = opt.featureSize > 0 ? mesh : TriMesh{};
+  // The default amount that raises the energy of what it fairs has collapsed a feature smaller
+  // than it into a needle (the principal part shrinks what it smooths): half of it, and so on. A
+  // region run says so itself (its guard gives the input back, StopReason::Unchanged). An amount
+  // the user chose runs as chosen; the log says when the energy rose.
+  const bool halve = r.amount.automatic && opt.featureSize > 0;
+  TriMesh work = halve ? mesh : TriMesh{};
   for (;;) {
     r.report = selected ? fair(mesh, *region, opt) : fair(mesh, opt);
     if (r.report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
-    if (!(opt.featureSize > 0)) break;
+    if (!halve) break;
     const bool rose = selected ? r.report.stop == StopReason::Unchanged
                                : !(measureCurvature(mesh, measure).energy < r.meshEnergyBefore);
     if (!rose) break;
@@ -214,7 +216,10 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     if (h > 0)
       r.amountLine += ", halved " + std::to_string(h) + (h == 1 ? " time" : " times") +
                       ": a larger one raised the energy (a feature smaller than it collapsed)";
-    r.log.push_back({h > 0 ? Severity::Warning : Severity::Info, r.amountLine});
+    const bool rose = !selected && !(r.meshEnergyAfter < r.meshEnergyBefore);
+    if (rose && !r.amount.automatic)
+      r.amountLine += "; the energy rose: a feature smaller than it collapsed (a smaller feature size may keep it)";
+    r.log.push_back({h > 0 || rose ? Severity::Warning : Severity::Info, r.amountLine});
   }
   if (r.movedRms >= 0 && r.diagonal > 0) {
     r.movedLine = "the vertices moved by " + number(100 * r.movedRms / r.diagonal, "%.3g") +
@@ -230,6 +235,12 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
 FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> selection, const ParamValues& v,
                          const Progress& progress) {
   JobOptions job = readJob(filterSpec(FilterId::Fairing, {}), v, Caller::MeshLab);
+  // The dialog's default feature size is the mesh's own amount (MeshFacts::featureSize: over the
+  // selected faces if any, in MeshLab's float): left as it was, it is "auto" (halved if it raised
+  // the energy), as on the other faces.
+  const double own = autoFeatureSize(mesh, selection && !selection->faces.empty() ? &*selection : nullptr);
+  if (job.flow.featureSize > 0 && std::abs(job.flow.featureSize - own) <= 1e-6 * own)
+    job.flow.featureSize = kAutoFeatureSize;
   if (!job.selected)
     selection.reset();
   else if (!selection || selection->faces.empty())
@@ -242,12 +253,12 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> selection, const P
   // no length unit (it runs to its own stop), and under the vector scheme an amount keeps the
   // connectivity (subdivision levels would be left unused: say so).
   std::vector<LogLine> notes;
-  if (opt.flow == FlowType::Bilaplacian && opt.featureSize > 0) {
+  if (opt.flow == FlowType::Bilaplacian && opt.featureSize != 0) {
     opt.featureSize = 0;
     notes.push_back({Severity::Info, "the Bilaplacian flow takes no feature size (its time has no length unit); "
                                      "it ran to its own stop"});
   }
-  if (opt.subdivisionLevels > 0 && opt.featureSize > 0 &&
+  if (opt.subdivisionLevels > 0 && opt.featureSize > 0 &&  // (auto is none with subdivision levels)
       (opt.scheme == Scheme::Automatic || opt.scheme == Scheme::Vector))
     notes.push_back({Severity::Warning, "the subdivision levels were not used: a feature size keeps the mesh's "
                                         "vertices; set 'Feature size' to 0 to fair coarse to fine, to the limit shape"});

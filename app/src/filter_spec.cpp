@@ -195,12 +195,12 @@ FilterSpec fairing(const MeshFacts& mesh) {
   ParamSpec feature = numberRow(
       ParamType::AbsPerc, "flow.featureSize", {"featureSize", "--feature-size", "feature_size", "feature_size"},
       [](auto& j) -> auto& { return j.flow.featureSize; }, 0, kUnbounded, "Feature size",
-      "Smooth away bumps smaller than this, keep larger shapes (one to two edge lengths remove a scan's "
-      "noise). Default: 3 short edge lengths of the faces to fair. 0: fair to the limit shape (a sphere, a "
+      "Smooth away bumps smaller than this, keep larger shapes (two edge lengths take much of a scan's "
+      "noise off). Default: 2 short edge lengths of the faces to fair. 0: fair to the limit shape (a sphere, a "
       "Clifford torus), which changes the whole model.",
       "a fairing amount: smooth away bumps smaller than this fraction of the bounding-box diagonal, keep larger "
-      "shapes, then stop; one to two edge lengths remove a scan's noise, and the output says how many edge "
-      "lengths it was and how far the vertices moved. Default auto: 3 short edge lengths (the 25 % quantile) of the "
+      "shapes, then stop; two edge lengths take much of a scan's noise off, and the output says how many edge "
+      "lengths it was and how far the vertices moved. Default auto: 2 short edge lengths (the 25 % quantile) of the "
       "faces to fair, halved while it would raise the energy. 0: fair until converged, to the limit shape (a "
       "sphere, a Clifford torus)");
   feature.defaultValue = mesh.featureSize;

@@ -101,7 +101,7 @@ def step():
             ob, state["long"] = noisy_sphere(6, 1.2, 2)
             state["operators"] = len(bpy.context.window_manager.operators)
             with bpy.context.temp_override(**view3d()):
-                result = bpy.ops.mesh.elastica_fair('INVOKE_DEFAULT', True, scheme="explicit", max_steps=10**9)
+                result = bpy.ops.mesh.elastica_fair('INVOKE_DEFAULT', True, scheme="explicit", feature_size=0, max_steps=10**9)
             assert result == {'RUNNING_MODAL'}, result
             from elastica_blender import operators
             state["job"] = operators.running_jobs[-1]

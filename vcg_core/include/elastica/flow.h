@@ -125,7 +125,7 @@ struct FlowOptions {
   double targetEdgeLength = 0;         ///< stop subdividing at this mean edge length (length; 0: no target); default 0
 
   /// A fairing amount (length; 0: flow until converged): run the flow's principal part −½Δ²u for
-  /// t = 2 (featureSize/2π)⁴, which damps ripples of that wavelength by 1/e, then stop with
+  /// t = 2 ln(100) (featureSize/2π)⁴, in which ripples of that wavelength lose 99 % of their height, then stop with
   /// StopReason::FeatureSize (docs/options.md). Elastica and Laplacian-of-H flows. Default 0.
   double featureSize = 0;
 

@@ -96,8 +96,9 @@ struct Run {
   const StageEnded& stageEnded;
   std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
   double time = 0;  // flow time
-  // FlowOptions::featureSize's flow time 2 (featureSize / 2π)⁴, or none.
-  const double timeLimit = opt.featureSize > 0 ? 2 * std::pow(opt.featureSize / (2 * M_PI), 4)
+  // FlowOptions::featureSize's flow time 2 ln(100) (featureSize / 2π)⁴, in which ripples of that
+  // wavelength lose 99 % of their height, or none.
+  const double timeLimit = opt.featureSize > 0 ? 2 * std::log(100.0) * std::pow(opt.featureSize / (2 * M_PI), 4)
                                                : std::numeric_limits<double>::infinity();
   bool stopped = false;
 

@@ -19,7 +19,7 @@ namespace elastica::app {
 /// FlowOptions::featureSize as JobOptions holds it before a run: "auto", resolved by runFairing
 /// (autoFeatureSize) once the mesh is known. Never reaches the core.
 inline constexpr double kAutoFeatureSize = -1;
-inline constexpr double kAutoFeatureEdges = 3;
+inline constexpr double kAutoFeatureEdges = 2;
 inline constexpr double kAutoEdgeQuantile = 0.25;
 /// An amount that would raise the energy of what it fairs (a feature smaller than it collapsing
 /// into a needle) is halved and run again, at most this many times; then the input comes back.
