@@ -15,8 +15,8 @@
 namespace elastica {
 namespace {
 
-// The unresolved vertices are those whose rise makes up this fraction of the whole rise.
-constexpr double kUnresolvedShare = 0.5;
+// The unresolved vertices: where the rise per unit area is this many times its mean.
+constexpr double kConcentration = 2;
 
 // Per-vertex energy terms (4H² − 2K)A of a mesh, and their sum.
 std::vector<double> vertexTerms(const Topology& topo, const std::vector<Vec3>& p, const FlowOptions& opt, double& sum) {
@@ -44,6 +44,7 @@ bool measureResolution(const TriMesh& mesh, const FlowOptions& opt, Resolution& 
   }
   const Topology fineTopo(fine.vertexCount(), fine.faces);
   Resolution r;
+  const Geometry geo = computeGeometry(topo, mesh.positions, opt.area);
   const std::vector<double> coarse = vertexTerms(topo, mesh.positions, opt, r.energy);
   const std::vector<double> subdivided = vertexTerms(fineTopo, fine.positions, opt, r.loopEnergy);
   // Each coarse vertex owns its own fine vertex and half of each edge vertex around it (an edge
@@ -53,19 +54,22 @@ bool measureResolution(const TriMesh& mesh, const FlowOptions& opt, Resolution& 
   for (int w = n; w < fineTopo.vertexCount(); ++w)
     for (int k = fineTopo.ringBegin(w); k < fineTopo.ringEnd(w); ++k)
       if (fineTopo.ringVertex(k) < n) rise[fineTopo.ringVertex(k)] += 0.5 * subdivided[w];
-  std::vector<std::pair<double, int>> order;
-  double total = 0;
-  for (int v = 0; v < n; ++v)
-    if (rise[v] > 0) order.emplace_back(rise[v], v), total += rise[v];
-  std::sort(order.begin(), order.end(), std::greater<>());
+  // Where the rise per unit area is kConcentration times its mean; if nowhere, the gap is spread
+  // over the whole mesh and every vertex is flagged. (A share of the sorted rises, the first rule,
+  // drew its line through a sphere's nearly equal rises, where MeshLab's float input and the
+  // CLI's double flagged different vertices.)
+  double total = 0, area = 0;
+  for (int v = 0; v < n; ++v) total += rise[v], area += geo.vertexArea[v];
+  const double mean = area > 0 ? total / area : 0;
   r.unresolved.assign(n, 0);
-  double covered = 0;
-  for (const auto& [value, v] : order) {
-    if (covered >= kUnresolvedShare * total) break;
-    covered += value;
+  bool any = false;
+  for (int v = 0; v < n; ++v) {
+    if (!(geo.vertexArea[v] > 0) || !(rise[v] > kConcentration * mean * geo.vertexArea[v]) || !(mean > 0)) continue;
+    any = true;
     r.unresolved[v] = 1;
     for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) r.unresolved[topo.ringVertex(k)] = 1;
   }
+  if (!any) r.unresolved.assign(n, 1);
   out = std::move(r);
   return true;
 }

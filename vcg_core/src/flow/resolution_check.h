@@ -21,8 +21,9 @@ inline constexpr double kResolvedGap = 0.02;
 struct Resolution {
   double energy = 0;      ///< E of the mesh (the flow's vertex areas and curvature options)
   double loopEnergy = 0;  ///< E of the mesh Loop-subdivided once
-  /// Per vertex: 1 where the subdivision's energy rose most, the vertices (and their one-rings)
-  /// whose rise makes up half of the whole rise.
+  /// Per vertex: 1 where the subdivision's energy rose most: the vertices (and their one-rings)
+  /// whose rise per unit area is twice its mean over the mesh; every vertex if none is (the gap is
+  /// spread evenly).
   std::vector<std::uint8_t> unresolved;
   /// (loopEnergy − energy) / max(|energy|, 1).
   double gap() const;
