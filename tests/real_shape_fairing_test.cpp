@@ -82,9 +82,11 @@ TEST(RealShapes, KnottedTubeStopsAtSelfContactWithoutCrossing) {
 
 // Scans and a CAD part with handles (issue 40): the default fair() must end with a true stop, on
 // a resolved state (Loop-subdivided once, E within 2 %), below the genus bound
-// 32π + 8π(g − 1), with its genus and no crossing face, within 300 attempts. Measured at
-// OMP_NUM_THREADS=1 and 2 alike (attempts, E, Loop-1 E): elephant (genus 3) 221, 141.45, +0.9 %;
-// joint (genus 2, a CAD part of 221 vertices) 158, 112.41, +1.2 %; elk (genus 1) 57, 78.80, +1.0 %.
+// 32π + 8π(g − 1), with its genus and no new crossing face, within 300 attempts. Measured with the
+// CLI at OMP_NUM_THREADS=1 and 2 (byte-identical outputs; attempts, E, Loop-1 E): elephant
+// (genus 3) 221, 141.45, +0.9 %; joint (genus 2, a CAD part of 221 vertices) 158, 112.41, +1.2 %;
+// elk (genus 1, its input crosses itself at 11 faces) 57, 78.80, +1.0 %. Main took 1,582, 791
+// and 406 (docs/benchmarks.md, "Shapes with handles").
 struct Handles {
   const char* file;
   int genus;
@@ -97,14 +99,12 @@ TEST_P(RealShapeWithHandles, ReachesAResolvedFairShapeWithItsHandles) {
   TriMesh m = readSample(GetParam().file);
   const int g = GetParam().genus;
   ASSERT_EQ(genus(m), g);
-  const bool inputCrossed = test::selfIntersections(m) > 0;  // the elk's does (11 faces)
+  const int crossedBefore = test::selfIntersections(m);  // the elk's input: 11 faces
   const FlowReport r = fair(m);
   EXPECT_TRUE(r.stop == StopReason::Converged || r.stop == StopReason::SelfContact) << static_cast<int>(r.stop);
   EXPECT_LE(r.steps, GetParam().attempts);
   EXPECT_EQ(genus(m), g);
-  if (!inputCrossed) {
-    EXPECT_EQ(test::selfIntersections(m), 0);
-  }
+  EXPECT_LE(test::selfIntersections(m), crossedBefore);
   const double energy = test::energyOf(m);
   EXPECT_NEAR(r.energyFinal, energy, 1e-9 * energy);
   EXPECT_LT(energy, 32 * M_PI + 8 * M_PI * (g - 1));

@@ -424,7 +424,9 @@ StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeT
     // along their normals while E fell by 0.1 %); below T, the mesh holds the steps back (joint:
     // 200 steps at 1e-3 T, each refused above it), and the schedule remeshes. The resolution
     // check (flow/resolution_check.h) judges what this rule calls converged. Only where the
-    // schedule remeshes (`remeshing`): with the connectivity kept, the mesh is the user's.
+    // schedule remeshes (`remeshing`: with the connectivity kept, the mesh is the user's), and on
+    // shapes with handles (on genus 0 the rule's stops moved a noisy sphere's remeshings apart
+    // between MeshLab's float input and the CLI's double, tests/plugin/meshlabserver_test.cpp).
     tail.emplace_back(energy, accepted);
     if (remeshing && withHandles && static_cast<int>(tail.size()) > kTailWindow) {
       const double before = tail.front().first;
