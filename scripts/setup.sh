@@ -96,10 +96,12 @@ cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
 # (bench/scan_holes_bench), and two more scans for the hole-size sweep of docs/restoration.md
 # (bench/restoration_sweep.sh): the armadillo (26,002 vertices) and a refined elephant (44,460);
 # and four whole scans the default fair() is tested on (tests/real_shape_fairing_test.cpp): a cow
-# (2,904 vertices), a dino (3,916), a bull (6,200) and a knotted tube, knot1 (3,200, genus 1).
+# (2,904 vertices), a dino (3,916), a bull (6,200) and a knotted tube, knot1 (3,200, genus 1); with
+# the elephant (genus 3), a CAD part, joint (221, genus 2), and an elk (1,645, genus 1) for shapes
+# with handles.
 # The restoration tests and benchmarks use them. `apt-get download`
 # fetches the package file without installing it (24 MB; no root needed once apt's lists exist).
-cgal_meshes=(elephant.off elephant-with-holes.off bunny00.off armadillo.off refined_elephant.off cow.off dino.off bull.off knot1.off lion-head.off mannequin-devil.off)
+cgal_meshes=(elephant.off elephant-with-holes.off bunny00.off armadillo.off refined_elephant.off cow.off dino.off bull.off knot1.off lion-head.off mannequin-devil.off joint.off elk.off)
 fetch_cgal_meshes() {
   local candidate dir work deb m complete=1
   candidate=$(apt-cache policy libcgal-demo 2>/dev/null | awk '/Candidate:/ {print $2}')

@@ -42,6 +42,9 @@ constexpr int kFloorVerticesPerHandle = 1000, kFloorVertices = 100;
 // of a cage's flow was seen to fall below the continuum's (docs/figures.md), and refines at most
 // 8× below the region's mean edge length.
 constexpr double kTargetCurvatureTimesEdge = 0.4, kMaxRefinement = 8;
+// remeshMovingRegion's `refineAt`: edges this fraction of their length around the flagged vertices
+// (and no shorter than half the curvature's shortest).
+constexpr double kUnresolvedRefinement = 0.5;
 constexpr int kMaxGrowth = 8;  // a remeshing leaves at most 8× the vertices (+1000)
 constexpr double kMaxEdgeToTarget = 1000;
 // remeshMovingRegion within a budget: fits of the targets after the first, before giving up.
@@ -247,7 +250,8 @@ long long vertexBudget(long long moving, int genus) {
   return moving + static_cast<long long>(std::ceil(kWidening * kVerticesPerEnergy * 8 * M_PI * (genus + 3)));
 }
 
-bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving) {
+bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving,
+                        const std::vector<std::uint8_t>* refineAt) {
   const TriMesh& mesh = moving.mesh();
   const Topology& topo = moving.topology();
   const VertexRoles& roles = moving.roles();
@@ -285,6 +289,14 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
       double k = kappa[v];
       for (int r = topo.ringBegin(v); r < topo.ringEnd(v); ++r) k = std::max(k, kappa[topo.ringVertex(r)]);
       if (k > 0) sigma[v] = std::clamp(kTargetCurvatureTimesEdge / k, target / kMaxRefinement, target);
+    }
+  }
+  if (refineAt) {
+    for (int v = 0; v < topo.vertexCount(); ++v) {
+      if (!(*refineAt)[v] || topo.valence(v) == 0) continue;
+      double ell = 0;
+      for (int r = topo.ringBegin(v); r < topo.ringEnd(v); ++r) ell += (mesh.positions[topo.ringVertex(r)] - mesh.positions[v]).norm();
+      sigma[v] = std::min(sigma[v], std::max(kUnresolvedRefinement * ell / topo.valence(v), target / (2 * kMaxRefinement)));
     }
   }
   PatchRemeshingOptions options;

@@ -77,8 +77,12 @@ double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 /// coarseStartLevels: 2^k for k levels). `maxMoving` (0: none) bounds the moving vertices the
 /// remeshing leaves (vertexBudget): where the curvature-adaptive edges would need more, the
 /// shortest targets are raised to a common floor until the predicted count fits, so the necks stay
-/// the most refined places, and splitting stops at the bound.
-bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1, long long maxMoving = 0);
+/// the most refined places, and splitting stops at the bound. `refineAt` (one flag per vertex, or
+/// null) asks for edges half as long as they are now around the flagged vertices, below the
+/// curvature's target: where a Loop subdivision showed that the mesh does not resolve its shape
+/// (flow/resolution_check.h).
+bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1, long long maxMoving = 0,
+                        const std::vector<std::uint8_t>* refineAt = nullptr);
 
 /// A CAD tessellation's long thin triangles, split toward the edge length of remeshMovingRegion's
 /// isotropic target (moving faces only, one pass without relaxation): no input vertex moves and

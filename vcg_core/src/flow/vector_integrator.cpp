@@ -25,7 +25,9 @@ constexpr double kEnergySlack = 1e-9;
 // step at the scale of the shape overshoots and W rises. It only preconditions: δ = 0 exactly
 // where ∂W/∂X = 0, whatever the matrix. Measured (attempts of fair with this scheme, one run each,
 // with a trace build): 96×32 torus 312 → 30, cow 136 → 98, 48×16 torus 622 (stalled) → 27 for
-// 0 → 8; at 16 the cow stopped at E 78 under the energy-rate stop this scheme first had.
+// 0 → 8; at 16 the cow stopped at E 78 under the energy-rate stop this scheme first had. With
+// VectorIntegrator::saddleStiffness the H² is H² + max(0, −K): on a saddle (a handle's tunnel,
+// H ≈ 0, K < 0) the principal curvatures are ±√−K, which H² alone does not see.
 constexpr double kCurvatureStiffness = 8;
 // A step refused for a few vertices (faces turned over at their corners, or an energy rise that
 // a few vertices' terms account for) is tried again with those vertices and their rings held
@@ -105,7 +107,8 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   edgeScratch_.resize(topo.edgeCount());
   for (int e = 0; e < topo.edgeCount(); ++e) {
     const auto& ev = topo.edgeVertices(e);
-    const double h2 = 0.5 * (curv.H[ev[0]] * curv.H[ev[0]] + curv.H[ev[1]] * curv.H[ev[1]]);
+    auto bend = [&](int v) { return curv.H[v] * curv.H[v] + (saddleStiffness_ ? std::max(0.0, -curv.K[v]) : 0.0); };
+    const double h2 = 0.5 * (bend(ev[0]) + bend(ev[1]));
     edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
   }
   solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, kCurvatureStiffness * tau);
