@@ -22,6 +22,16 @@ T barrier(const T& cot) {
   return cot > kBarrierCot ? T(kBarrierWeight * (cot - kBarrierCot) * (cot - kBarrierCot)) : T(0);
 }
 
+}  // namespace
+
+double needleBarrierStiffness(double cot) {
+  if (!(cot > kBarrierCot)) return 0;
+  const double dcot = 1 + cot * cot;  // −d cot / dθ
+  return kBarrierWeight * (2 * dcot * dcot + 4 * (cot - kBarrierCot) * cot * dcot);
+}
+
+namespace {
+
 using Partials = Eigen::Matrix<double, 9, 1>;
 using Dual = Eigen::AutoDiffScalar<Partials>;
 using DualVec = Eigen::Matrix<Dual, 3, 1>;
