@@ -169,8 +169,9 @@ def sizes_table(args, V, F):
                 index = set(face_keys(V3, F3))
                 kept = "yes" if all(k in index for k in face_keys(V, F[outside])) else "NO"
         secs = time.time() - t0
+        stop = rep["stop"] + (f" ({rep['refused_because']})" if rep.get("refused_because") else "")
         print(f"| {name} | {len(V)} | {faces} | {secs:.2f} | {rep['steps']} ({rep.get('rejected_steps', 0)}) | "
-              f"{rep['stop']} | {energies} | {kept} | {load:.1f}, {threads} |", flush=True)
+              f"{stop} | {energies} | {kept} | {load:.1f}, {threads} |", flush=True)
         if args.save:
             os.makedirs(args.save, exist_ok=True)
             elastica.write(os.path.join(args.save, f"{size}.ply"), V3, F3)

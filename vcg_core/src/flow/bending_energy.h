@@ -33,8 +33,8 @@ inline bool countedInBending(const Topology& topo, const Geometry& geo, const st
 }
 
 /// The second derivative of a corner's needle barrier in its angle θ (0 at angles of θ₀ = 10° and
-/// more), for a corner of cotangent `cot`: the barrier's stiffness, which the vector scheme's matrix
-/// adds (vector_integrator.cpp) so that a step does not overshoot it.
+/// more), for a corner of cotangent `cot` (taken as 1° below 1°): the barrier's stiffness, which the
+/// vector scheme's matrix adds (vector_integrator.cpp) so that a step does not overshoot it.
 double needleBarrierStiffness(double cot);
 
 /// W at the geometry's positions `p` (fills `out.y` and `out.value`).

@@ -89,7 +89,7 @@ bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
 // weight (d²b/dθ²) / ℓ² (a far corner moving δ across an edge of length ℓ turns the angle by
 // δ/ℓ), in the matrix's units (τ/4 of W's Hessian). It only preconditions: δ = 0 exactly where
 // ∂W/∂X = 0.
-void VectorIntegrator::addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
+bool VectorIntegrator::addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
                                            const std::vector<std::uint8_t>& activeFace, double tau) {
   edgeScratch_.assign(topo.edgeCount(), 0.0);
   bool any = false;
@@ -112,6 +112,7 @@ void VectorIntegrator::addBarrierStiffness(const Topology& topo, const Geometry&
     }
   }
   if (any) solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, 0.25 * tau);
+  return any;
 }
 
 bool VectorIntegrator::tryStep(FlowState& state, double tau) {
@@ -133,21 +134,26 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   const double before = bending_.value;
   termBefore_ = bending_.term;
   const int nv = topo.vertexCount();
-  solver_->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, freeIndex_, state.roles().freeCount,
-                                 1.0, 0.5 * tau);
   const Curvature& curv = state.curvature();
-  edgeScratch_.resize(topo.edgeCount());
-  for (int e = 0; e < topo.edgeCount(); ++e) {
-    const auto& ev = topo.edgeVertices(e);
-    const double h2 = 0.5 * (curv.H[ev[0]] * curv.H[ev[0]] + curv.H[ev[1]] * curv.H[ev[1]]);
-    edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
-  }
-  solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, kCurvatureStiffness * tau);
-  addBarrierStiffness(topo, geo, positions, activeFace, tau);
+  auto assemble = [&](bool barrierStiffness) {
+    solver_->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, freeIndex_, state.roles().freeCount,
+                                   1.0, 0.5 * tau);
+    edgeScratch_.resize(topo.edgeCount());
+    for (int e = 0; e < topo.edgeCount(); ++e) {
+      const auto& ev = topo.edgeVertices(e);
+      const double h2 = 0.5 * (curv.H[ev[0]] * curv.H[ev[0]] + curv.H[ev[1]] * curv.H[ev[1]]);
+      edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
+    }
+    solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, kCurvatureStiffness * tau);
+    return barrierStiffness && addBarrierStiffness(topo, geo, positions, activeFace, tau);
+  };
+  const bool withBarrier = assemble(true);
   saved_ = positions;
   faceNormalBefore_ = geo.faceNormal;
   normalBefore_ = geo.vertexNormal;
-  if (!solve(bending_.gradient, tau)) return false;
+  // The barrier's stiffness at a step far beyond the shape's time scale can make the matrix too
+  // ill-conditioned to factorise (pivots lost to rounding): the step is then solved without it.
+  if (!solve(bending_.gradient, tau) && !(withBarrier && (assemble(false), solve(bending_.gradient, tau)))) return false;
 
   // No vertex moves farther than InternalFlowOptions::maxJump of its mean edge lengths: a longer
   // step is shortened (every displacement by the same factor), which keeps it a descent direction.

@@ -48,7 +48,7 @@ class VectorIntegrator {
  private:
   void buildRows(const FlowState& state);
   bool solve(const std::vector<Vec3>& gradient, double tau);
-  void addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
+  bool addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
                            const std::vector<std::uint8_t>& activeFace, double tau);
 
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
