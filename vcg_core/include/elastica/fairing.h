@@ -53,7 +53,10 @@ FlowReport fair(TriMesh& mesh, const FlowOptions& opt = {});
 /// new vertices fill the slots of the vertices that moved, ascending, then are appended; faces off
 /// the region keep their index and value; the region's faces fill its slots, ascending, then are
 /// appended. If the region comes back with fewer vertices (or faces) than it had, the slots left
-/// over are removed and the vertices (faces) after them move down, keeping their order.
+/// over are removed and the vertices (faces) after them move down, keeping their order. If nothing
+/// the piece's run reached passes the checks below, the region runs again on the whole mesh with
+/// the selection, in what remains of maxSteps and maxSeconds (a stopgap: docs/benchmarks.md,
+/// "Regions"); FlowReport::steps and seconds count both runs.
 ///
 /// The output is checked against the input before it is returned: a manifold mesh (nothing
 /// beyond the input's own defects), no two vertices of the region's faces or their neighbours at
