@@ -5,8 +5,8 @@ a bumpy part and fairs only that, and check every output (issue 42).
 A region is the faces whose centroid lies within the --quantile of centroid distances to a random
 vertex; with --noise, N(0, noise * mean edge) is added to its faces' vertices (one generator,
 numpy's default_rng(--seed), for both, as the issue's recipe). Each region runs as it is and noisy
-(--variants). Every run uses the default options but
-max_seconds. Per run, one line:
+(--variants). Every run fairs to the limit shape (feature_size=0; the default since issue 42 is a
+fairing amount) with the default options but max_seconds. Per run, one line:
   faces, seconds, attempts, stop, the region's energy before -> after (measured here, on the
   vertices of the region's faces: the region and its fixed rings, each mesh at its own resolution),
   manifold (every edge on at most two faces, one fan per vertex), coincident vertices (used
@@ -16,6 +16,13 @@ max_seconds. Per run, one line:
 
   PYTHONPATH=build/python bench/region_sweep.py ~/.cache/elastica/cgal-data-*/meshes/lion-head.off \
       --regions 8 --noise 0.1 --max-seconds 60 --mesh-check build/bin/mesh_check
+
+With --sizes (docs/benchmarks.md, "Regions"), one region per size instead: the SIZE faces whose
+centroids are nearest a random vertex (default_rng(--seed)), no noise, optionally on the scan
+Loop-subdivided --loop times (bench/loop_energy.py's Loop step; closed scans only); "all" fairs the
+whole scan (its border fixed). One Markdown table row per run, with the load average before it:
+
+  PYTHONPATH=build/python bench/region_sweep.py /work/zoo/data/meshes/man.off --sizes 1000,10000,50000 --loop 2
 """
 import argparse
 import json
@@ -129,6 +136,47 @@ def crossing_faces(mesh_check, V, F, tmp):
         return None
 
 
+def sizes_table(args, V, F):
+    """One region per size (or the whole scan), one table row each."""
+    if args.loop:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        from loop_energy import loop_subdivide
+        for _ in range(args.loop):
+            V, F = loop_subdivide(V, F)
+    name = os.path.basename(args.mesh) + (f" Loop x{args.loop}" if args.loop else "")
+    centroids = V[F].mean(axis=1)
+    threads = os.environ.get("OMP_NUM_THREADS", "all")
+    print(f"| scan | vertices | region faces | seconds | attempts (rejected) | stop | region E before -> after | outside kept | load, threads |")
+    print("|---|---:|---:|---:|---:|---|---|---|---|")
+    for size in args.sizes.split(","):
+        rng = np.random.default_rng(args.seed)
+        load = os.getloadavg()[0]
+        t0 = time.time()
+        if size == "all":
+            V3, F3, rep = elastica.fair(V, F, feature_size=0, max_seconds=args.max_seconds)
+            energies = f"{rep['mesh_energy_before']:.4g} -> {rep['mesh_energy_after']:.4g} (whole)"
+            kept, faces = "-", len(F)
+        else:
+            p = V[rng.integers(len(V))]
+            d = np.linalg.norm(centroids - p, axis=1)
+            sel = np.argsort(d, kind="stable")[:int(size)]
+            V3, F3, rep = elastica.fair(V, F, sel, feature_size=0, max_seconds=args.max_seconds)
+            energies = f"{rep['region_energy_before']:.4g} -> {rep['region_energy_after']:.4g}"
+            faces = len(sel)
+            kept = "-"
+            if args.check_outside:
+                outside = np.setdiff1d(np.arange(len(F)), sel)
+                index = set(face_keys(V3, F3))
+                kept = "yes" if all(k in index for k in face_keys(V, F[outside])) else "NO"
+        secs = time.time() - t0
+        stop = rep["stop"] + (f" ({rep['refused_because']})" if rep.get("refused_because") else "")
+        print(f"| {name} | {len(V)} | {faces} | {secs:.2f} | {rep['steps']} ({rep.get('rejected_steps', 0)}) | "
+              f"{stop} | {energies} | {kept} | {load:.1f}, {threads} |", flush=True)
+        if args.save:
+            os.makedirs(args.save, exist_ok=True)
+            elastica.write(os.path.join(args.save, f"{size}.ply"), V3, F3)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("mesh")
@@ -141,10 +189,15 @@ def main():
     ap.add_argument("--mesh-check", default="", help="bench's mesh_check binary, for crossing faces")
     ap.add_argument("--only", default="", help="comma-separated run names (e.g. 3,3n) to run alone")
     ap.add_argument("--save", default="", help="a folder to write each output to (RUN.ply)")
+    ap.add_argument("--sizes", default="", help="comma-separated region sizes in faces, or all: one region each")
+    ap.add_argument("--loop", type=int, default=0, help="with --sizes: Loop-subdivide the scan this many times")
+    ap.add_argument("--check-outside", action="store_true", help="with --sizes: check the faces off the region")
     args = ap.parse_args()
 
     V, F = elastica.read(args.mesh)
     V, F = np.asarray(V, dtype=float), np.asarray(F)
+    if args.sizes:
+        return sizes_table(args, V, F)
     e = np.linalg.norm(np.concatenate([V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 1]], V[F[:, 0]] - V[F[:, 2]]]), axis=1).mean()
     print(f"{os.path.basename(args.mesh)}: {len(V)} vertices, {len(F)} faces, mean edge {e:.4g}")
     print("run  faces  seconds  attempts  stop          region E before -> after   manifold coincident "

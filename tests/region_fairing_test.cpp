@@ -178,6 +178,60 @@ TEST(RegionFairing, NoisySphereCapReturnsToTheSphere) {
   EXPECT_LT(worst, 0.02 * sigma);
 }
 
+// A noisy cap of about 1,000 faces on an icosphere of 40,962 vertices: the run works on a piece
+// around the cap (flow/region_fairing.cpp) and splices its result back. The promises are the
+// same as on a small mesh, and the rest of the mesh keeps its order: the faces off the region come
+// back in their order, and if the region did not shrink, every vertex off its interior keeps its
+// index and its bits.
+TEST(RegionFairing, RegionOfABigMeshKeepsTheRest) {
+  const TriMesh sphere = shapes::icosphere(1, 6);
+  ASSERT_GE(sphere.vertexCount(), 40000);
+  std::vector<int> cap;
+  for (std::size_t f = 0; f < sphere.faces.size(); ++f) {
+    const Face& t = sphere.faces[f];
+    if ((sphere.positions[t[0]] + sphere.positions[t[1]] + sphere.positions[t[2]]).normalized().z() > 0.975)
+      cap.push_back(static_cast<int>(f));
+  }
+  ASSERT_GT(cap.size(), 800u);
+  ASSERT_LT(cap.size(), 1300u);
+  TriMesh noisy = sphere;
+  Rng rng(5);
+  addNoise(noisy, cap, 0.1 * meanEdge(sphere), rng);
+  FlowOptions opt;
+  opt.maxSteps = 300;
+  // The run and its checks build no topology of the whole mesh (the piece has a few thousand vertices).
+  TriMesh m = noisy;
+  Topology::resetLargestBuilt();
+  fair(m, FaceSet(cap), opt);
+  EXPECT_LT(Topology::largestBuilt(), noisy.vertexCount() / 4);
+  const FlowReport r = expectRegionKept(noisy, cap, opt, "icosphere cap", &m);
+  EXPECT_NE(r.stop, StopReason::Unchanged) << r.refusedBecause;
+  EXPECT_LT(r.regionEnergyAfter, 0.5 * r.regionEnergyBefore);
+  // The faces off the region, in their order, as their corners' positions.
+  auto offInOrder = [](const TriMesh& mesh, const std::vector<int>& region) {
+    std::vector<std::uint8_t> in(mesh.faces.size(), 0);
+    for (int f : region) in[f] = 1;
+    std::vector<std::array<Vec3, 3>> faces;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+      if (!in[f]) faces.push_back({mesh.positions[mesh.faces[f][0]], mesh.positions[mesh.faces[f][1]], mesh.positions[mesh.faces[f][2]]});
+    return faces;
+  };
+  EXPECT_TRUE(offInOrder(m, r.regionFaces) == offInOrder(noisy, cap));
+  if (m.vertexCount() >= noisy.vertexCount() && m.faceCount() >= noisy.faceCount()) {
+    std::vector<std::uint8_t> interior(noisy.positions.size(), 1), inCap(noisy.faces.size(), 0);
+    for (int f : cap) inCap[f] = 1;
+    for (std::size_t f = 0; f < noisy.faces.size(); ++f)
+      if (!inCap[f])
+        for (int v : noisy.faces[f]) interior[v] = 0;
+    int moved = 0;
+    for (std::size_t v = 0; v < interior.size(); ++v)
+      if (!interior[v]) moved += std::memcmp(&m.positions[v], &noisy.positions[v], sizeof(Vec3)) != 0;
+    EXPECT_EQ(moved, 0);
+    for (std::size_t f = 0; f < noisy.faces.size(); ++f)
+      if (!inCap[f]) EXPECT_EQ(m.faces[f], noisy.faces[f]) << "face " << f;
+  }
+}
+
 struct ScanRegions {
   const char* mesh;
   int regions;

@@ -44,9 +44,24 @@ FlowReport fair(TriMesh& mesh, const FlowOptions& opt = {});
 /// it are split to keep the mesh conforming (subdivideMidpointRegion); every other face keeps its
 /// index and vertices. FlowReport::regionFaces lists the region's faces in the output mesh.
 ///
+/// The run works on a piece of the mesh: the region's faces, the three rings of faces around it
+/// (its fixed rings and what their operators read) and the faces of the rest that come near it
+/// (within a quarter of its box's diagonal), as fixed obstacles. Time and memory of the flow and
+/// of the checks below scale with the piece, not with the mesh (a few linear passes over the faces
+/// remain: the selection flags, the vertex→face index, the obstacle search). The result is written
+/// back in this order: every vertex that does not move keeps its index; the region's surviving and
+/// new vertices fill the slots of the vertices that moved, ascending, then are appended; faces off
+/// the region keep their index and value; the region's faces fill its slots, ascending, then are
+/// appended. If the region comes back with fewer vertices (or faces) than it had, the slots left
+/// over are removed and the vertices (faces) after them move down, keeping their order. If nothing
+/// the piece's run reached passes the checks below, the region runs again on the whole mesh with
+/// the selection, in what remains of maxSteps and maxSeconds (a stopgap: docs/benchmarks.md,
+/// "Regions"); FlowReport::steps and seconds count both runs.
+///
 /// The output is checked against the input before it is returned: a manifold mesh (nothing
 /// beyond the input's own defects), no two vertices of the region's faces or their neighbours at
-/// one point and no more faces crossing there than in the input, every face off the region as it
+/// one point and no more faces crossing there (against the region's piece, and against every face
+/// of the mesh near the result if it left the piece's box) than in the input, every face off the region as it
 /// was bit for bit, and the region's energy (FlowReport::regionEnergyBefore / After: its faces'
 /// vertices, each mesh at its own resolution) not above its start. An output that fails is not
 /// returned (FlowReport::refusedBecause says what failed): the last stage end of the schedule that

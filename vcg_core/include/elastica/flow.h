@@ -148,6 +148,8 @@ struct FlowOptions {
 /// One stage of the coarse-to-fine schedule.
 struct FlowStage {
   int level = 0;
+  /// The mesh the stage flowed: the whole mesh, or for fair(mesh, region, …) the piece around the
+  /// region that the run works on (fairing.h).
   int vertices = 0, faces = 0;
   long long steps = 0;
   double energy = 0;   ///< at the end of the stage

@@ -3,6 +3,7 @@
 
 #include <unsupported/Eigen/AutoDiff>
 
+#include <algorithm>
 #include <cmath>
 
 namespace elastica {
@@ -21,6 +22,20 @@ template <class T>
 T barrier(const T& cot) {
   return cot > kBarrierCot ? T(kBarrierWeight * (cot - kBarrierCot) * (cot - kBarrierCot)) : T(0);
 }
+
+}  // namespace
+
+double needleBarrierStiffness(double cot) {
+  if (!(cot > kBarrierCot)) return 0;
+  // At most a 1° corner's: a scan's own slivers (0.01°) would give 10¹⁶, beyond what a
+  // factorisation in double resolves beside the bending terms.
+  constexpr double kLargestCot = 57.289961630759;  // cot 1°
+  cot = std::min(cot, kLargestCot);
+  const double dcot = 1 + cot * cot;  // −d cot / dθ
+  return kBarrierWeight * (2 * dcot * dcot + 4 * (cot - kBarrierCot) * cot * dcot);
+}
+
+namespace {
 
 using Partials = Eigen::Matrix<double, 9, 1>;
 using Dual = Eigen::AutoDiffScalar<Partials>;

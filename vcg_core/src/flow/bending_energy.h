@@ -32,6 +32,11 @@ inline bool countedInBending(const Topology& topo, const Geometry& geo, const st
   return active[i] && !topo.isBoundaryVertex(i) && geo.vertexArea[i] > 0;
 }
 
+/// The second derivative of a corner's needle barrier in its angle θ (0 at angles of θ₀ = 10° and
+/// more), for a corner of cotangent `cot` (taken as 1° below 1°): the barrier's stiffness, which the
+/// vector scheme's matrix adds (vector_integrator.cpp) so that a step does not overshoot it.
+double needleBarrierStiffness(double cot);
+
 /// W at the geometry's positions `p` (fills `out.y` and `out.value`).
 double bendingEnergy(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
                      const std::vector<std::uint8_t>& active, BendingEnergy& out);

@@ -23,4 +23,7 @@ using StageEnded = std::function<void(const TriMesh&, const std::vector<std::uin
 FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, const FlowOptions& opt,
                       const InternalFlowOptions& internal, const StageEnded& stageEnded = {});
 
+/// @throws InvalidInputError if `opt` is not valid (what fair() checks before it starts).
+void validateFlowOptions(const FlowOptions& opt);
+
 }  // namespace elastica

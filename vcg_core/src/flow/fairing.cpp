@@ -6,7 +6,6 @@
 #include "flow/flow_state.h"
 #include "flow/mesh_quality_stage.h"
 #include "flow/principal_part_filter.h"
-#include "flow/region_guard.h"
 #include "flow/resolution_check.h"
 #include "flow/schedule.h"
 #include "flow/semi_implicit_integrator.h"
@@ -805,49 +804,6 @@ FlowReport fairMasked(TriMesh& mesh, std::vector<std::uint8_t>* faceSelected, co
 
 FlowReport fair(TriMesh& mesh, const FlowOptions& opt) { return fairMasked(mesh, nullptr, opt, {}); }
 
-FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt) {
-  std::vector<std::uint8_t> selection;
-  try {
-    selection = region.flags(mesh.faces.size());
-  } catch (const InvalidInputError& e) {
-    throw InvalidInputError(std::string("fair: the region's ") + e.what());
-  }
-  validate(opt, {});
-  // A region of a scan is faired where the user wants the rest kept: whatever the run reached, the
-  // mesh that comes back passes the guard's checks. If the run's last state fails them, the last
-  // stage end that passed comes back, else the input (region_guard.h).
-  const RegionGuard guard(mesh, selection, opt);
-  struct Kept {
-    TriMesh mesh;
-    std::vector<std::uint8_t> selection;
-    double energy = 0;
-    int stage = 0;
-  };
-  Kept kept{mesh, selection, guard.energyBefore(), -1};
-  int stagesEnded = 0;
-  const StageEnded stageEnded = [&](const TriMesh& m, const std::vector<std::uint8_t>& s) {
-    double energy = 0;
-    if (guard.check(m, s, energy).empty()) kept = {m, s, energy, stagesEnded};
-    ++stagesEnded;
-  };
-  FlowReport report;
-  try {
-    report = fairMasked(mesh, &selection, opt, {}, stageEnded);
-  } catch (FlowDivergedError&) {
-    mesh = std::move(kept.mesh);  // a diverged run's last state is not kept either (the contract)
-    throw;
-  }
-  report.regionEnergyBefore = guard.energyBefore();
-  report.refusedBecause = guard.check(mesh, selection, report.regionEnergyAfter);
-  if (!report.refusedBecause.empty()) {
-    mesh = std::move(kept.mesh);
-    selection = std::move(kept.selection);
-    report.regionEnergyAfter = kept.energy;
-    report.keptStage = kept.stage;
-    if (kept.stage < 0) report.stop = StopReason::Unchanged;
-  }
-  report.regionFaces = FaceSet::fromFlags(selection).faces;
-  return report;
-}
+void validateFlowOptions(const FlowOptions& opt) { validate(opt, {}); }
 
 }  // namespace elastica

@@ -82,6 +82,41 @@ bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
   return true;
 }
 
+// The needle barrier's stiffness (bending_energy.h), which the bending matrix lacks: at a corner
+// below 10° the barrier's second derivative grows as 1/θ⁴, and a step that ignores it overshoots
+// the barrier and raises W at any τ above ~10⁻⁴ ℓ⁴. On 1,000-face regions of a scan (man.off,
+// docs/benchmarks.md "Regions") one took 11,368 attempts at τ ≈ 10⁻⁷ of its shape time, every first
+// solve raising W, and one on the scan Loop-subdivided twice took steps that the jump limit
+// shortened to nothing (1,701 attempts, W 40,646 → 40,640); with the stiffness, 82 and 19. Added as an edge Laplacian on the two edges at the corner,
+// weight (d²b/dθ²) / ℓ² (a far corner moving δ across an edge of length ℓ turns the angle by
+// δ/ℓ), in the matrix's units (τ/4 of W's Hessian). It only preconditions: δ = 0 exactly where
+// ∂W/∂X = 0.
+bool VectorIntegrator::addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
+                                           const std::vector<std::uint8_t>& activeFace, double tau) {
+  edgeScratch_.assign(topo.edgeCount(), 0.0);
+  bool any = false;
+  cornerEdge_.assign(3 * static_cast<std::size_t>(topo.faceCount()), -1);
+  for (int e = 0; e < topo.edgeCount(); ++e)
+    for (int c : topo.edgeOppositeCorners(e))
+      if (c >= 0) cornerEdge_[c] = e;
+  for (int f = 0; f < topo.faceCount(); ++f) {
+    if (!activeFace[f] || !(geo.faceArea[f] > 0)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t c = 3 * static_cast<std::size_t>(f) + k;
+      const double stiffness = needleBarrierStiffness(geo.cornerDot[c] / (2 * geo.faceArea[f]));
+      if (stiffness == 0) continue;
+      for (int side = 1; side <= 2; ++side) {  // the edges at corner k are opposite corners k + 1, k + 2
+        const int e = cornerEdge_[3 * static_cast<std::size_t>(f) + (k + side) % 3];
+        const auto& ev = topo.edgeVertices(e);
+        const double length2 = (p[ev[0]] - p[ev[1]]).squaredNorm();
+        if (length2 > 0) edgeScratch_[e] += stiffness / length2, any = true;
+      }
+    }
+  }
+  if (any) solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, 0.25 * tau);
+  return any;
+}
+
 bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   std::vector<Vec3>& positions = state.positions();
   lastRejectionCrossed_ = false;
@@ -101,21 +136,27 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   const double before = bending_.value;
   termBefore_ = bending_.term;
   const int nv = topo.vertexCount();
-  solver_->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, freeIndex_, state.roles().freeCount,
-                                 1.0, 0.5 * tau);
   const Curvature& curv = state.curvature();
-  edgeScratch_.resize(topo.edgeCount());
-  for (int e = 0; e < topo.edgeCount(); ++e) {
-    const auto& ev = topo.edgeVertices(e);
+  auto assemble = [&](bool barrierStiffness) {
+    solver_->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, freeIndex_, state.roles().freeCount,
+                                   1.0, 0.5 * tau);
+    edgeScratch_.resize(topo.edgeCount());
     auto bend = [&](int v) { return curv.H[v] * curv.H[v] + (saddleStiffness_ ? std::max(0.0, -curv.K[v]) : 0.0); };
-    const double h2 = 0.5 * (bend(ev[0]) + bend(ev[1]));
-    edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
-  }
-  solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, kCurvatureStiffness * tau);
+    for (int e = 0; e < topo.edgeCount(); ++e) {
+      const auto& ev = topo.edgeVertices(e);
+      const double h2 = 0.5 * (bend(ev[0]) + bend(ev[1]));
+      edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
+    }
+    solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, kCurvatureStiffness * tau);
+    return barrierStiffness && addBarrierStiffness(topo, geo, positions, activeFace, tau);
+  };
+  const bool withBarrier = assemble(true);
   saved_ = positions;
   faceNormalBefore_ = geo.faceNormal;
   normalBefore_ = geo.vertexNormal;
-  if (!solve(bending_.gradient, tau)) return false;
+  // The barrier's stiffness at a step far beyond the shape's time scale can make the matrix too
+  // ill-conditioned to factorise (pivots lost to rounding): the step is then solved without it.
+  if (!solve(bending_.gradient, tau) && !(withBarrier && (assemble(false), solve(bending_.gradient, tau)))) return false;
 
   // No vertex moves farther than InternalFlowOptions::maxJump of its mean edge lengths: a longer
   // step is shortened (every displacement by the same factor), which keeps it a descent direction.

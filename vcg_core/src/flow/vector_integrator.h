@@ -54,6 +54,8 @@ class VectorIntegrator {
  private:
   void buildRows(const FlowState& state);
   bool solve(const std::vector<Vec3>& gradient, double tau);
+  bool addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
+                           const std::vector<std::uint8_t>& activeFace, double tau);
 
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
   bool lastStepShortened_ = false, guardEmbedding_ = false, saddleStiffness_ = false, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
@@ -61,6 +63,7 @@ class VectorIntegrator {
   long long connectivityVersion_ = -1;
   std::vector<int> freeIndex_;
   std::vector<double> edgeScratch_;
+  std::vector<int> cornerEdge_;
   std::vector<Vec3> saved_, faceNormalBefore_, normalBefore_, delta_;
   std::vector<double> termBefore_;
   std::vector<std::uint8_t> held_;  // free vertices the current attempt keeps in place
