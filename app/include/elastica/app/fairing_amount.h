@@ -21,8 +21,9 @@ namespace elastica::app {
 inline constexpr double kAutoFeatureSize = -1;
 inline constexpr double kAutoFeatureEdges = 2;
 inline constexpr double kAutoEdgeQuantile = 0.25;
-/// An amount that would raise the energy of what it fairs (a feature smaller than it collapsing
-/// into a needle) is halved and run again, at most this many times; then the input comes back.
+/// The default amount, if it would raise the energy of what it fairs (a feature smaller than it
+/// collapsing into a needle), is halved and run again, at most this many times; then the input
+/// comes back. An amount the user chose is not halved.
 inline constexpr int kAmountHalvings = 4;
 
 /// kAutoFeatureEdges × the kAutoEdgeQuantile quantile of `edgeLengths` (each face's three edges;

@@ -104,7 +104,8 @@ struct FairingResult {
 /// of every face. Checks what the faces' paths check first: the options against the table's
 /// ranges (checkOptions), the mesh (checkedTopology, non-manifold vertices refused, with `hints`)
 /// and a region with faces. opt.featureSize kAutoFeatureSize is sized from the faces to fair
-/// (autoFeatureSize); an amount that raises the energy is halved and run again (kAmountHalvings).
+/// (autoFeatureSize); that default amount, if it raises the energy, is halved and run again
+/// (kAmountHalvings). An amount the caller chose runs as chosen.
 /// @throws InvalidInputError (bad options or mesh, an empty region, nothing can move, ...),
 ///         FlowDivergedError (with the report so far), Error (the progress callback cancelled).
 FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const FlowOptions& opt, bool outputCurvature,
