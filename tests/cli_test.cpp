@@ -93,6 +93,10 @@ TEST(Cli, DefaultsKeepTheModelOfAScan) {
   const CommandResult limit = runElastica("fair " + bunny + " -o " + dir.file("g.ply") + " --feature-size 0 --max-steps 3");
   EXPECT_NE(limit.output.find("(max_steps)"), std::string::npos) << limit.output;
   EXPECT_EQ(limit.output.find("fairing amount"), std::string::npos) << limit.output;
+  // An amount keeps the vertices: subdivision levels asked for beside it are not used, and it says so.
+  const CommandResult levels = runElastica("fair " + bunny + " -o " + dir.file("h.ply") + " --feature-size 0.02 --subdivide 1");
+  EXPECT_NE(levels.output.find("the subdivision levels were not used"), std::string::npos) << levels.output;
+  EXPECT_EQ(io::readMesh(dir.file("h.ply")).mesh.faces, in.faces);
 }
 
 // A thin tube (a torus of radius ratio 10, eight edges around its tube) is already fair at the scale

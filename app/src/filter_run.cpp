@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 
 namespace elastica::app {
 namespace {
@@ -150,13 +151,15 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   // the user chose runs as chosen; the log says when the energy rose.
   const bool halve = r.amount.automatic && opt.featureSize > 0;
   TriMesh work = halve ? mesh : TriMesh{};
+  std::optional<MeshCurvature> measured;  // of the whole result, when the halving rule measured it
   for (;;) {
     r.report = selected ? fair(mesh, *region, opt) : fair(mesh, opt);
     if (r.report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
     if (!halve) break;
-    const bool rose = selected ? r.report.stop == StopReason::Unchanged
-                               : !(measureCurvature(mesh, measure).energy < r.meshEnergyBefore);
+    if (!selected) measured = measureCurvature(mesh, measure);
+    const bool rose = selected ? r.report.stop == StopReason::Unchanged : !(measured->energy < r.meshEnergyBefore);
     if (!rose) break;
+    measured.reset();
     if (r.amount.halvings == kAmountHalvings) {
       mesh = std::move(work);
       r.report.stop = StopReason::Unchanged;
@@ -185,8 +188,9 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     r.movedMax = largest;
   }
   r.outputCurvature = outputCurvature;
-  if (outputCurvature) r.curvature = measureCurvature(mesh, measure);
-  r.meshEnergyAfter = outputCurvature ? r.curvature.energy : measureCurvature(mesh, measure).energy;
+  if (!measured) measured = measureCurvature(mesh, measure);
+  r.meshEnergyAfter = measured->energy;
+  if (outputCurvature) r.curvature = std::move(*measured);
   r.log.push_back({Severity::Info, std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) +
                                        " vertices, " + std::to_string(report.steps) + " steps in " +
                                        number(report.seconds, "%.2f") + " s (" + labelOf(report.stop) + ")"});
@@ -219,7 +223,12 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     const bool rose = !selected && !(r.meshEnergyAfter < r.meshEnergyBefore);
     if (rose && !r.amount.automatic)
       r.amountLine += "; the energy rose: a feature smaller than it collapsed (a smaller feature size may keep it)";
-    r.log.push_back({h > 0 || rose ? Severity::Warning : Severity::Info, r.amountLine});
+    // The vector scheme's amount keeps the mesh's vertices (fairing.cpp): levels asked for go unused.
+    const bool levelsUnused = opt.subdivisionLevels > 0 && r.report.scheme == Scheme::Vector;
+    if (levelsUnused)
+      r.amountLine += "; the subdivision levels were not used (an amount keeps the mesh's vertices; feature size 0 "
+                      "fairs coarse to fine, to the limit shape)";
+    r.log.push_back({h > 0 || rose || levelsUnused ? Severity::Warning : Severity::Info, r.amountLine});
   }
   if (r.movedRms >= 0 && r.diagonal > 0) {
     r.movedLine = "the vertices moved by " + number(100 * r.movedRms / r.diagonal, "%.3g") +
@@ -248,20 +257,14 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> selection, const P
   const bool selected = job.selected;
   FlowOptions& opt = job.flow;
   opt.progress = flowProgress(progress, opt);
-  // The dialog always carries a feature size (the mesh's amount by default), so a choice that an
-  // amount does not go with is not refused here as the CLI refuses it: the Bilaplacian's time has
-  // no length unit (it runs to its own stop), and under the vector scheme an amount keeps the
-  // connectivity (subdivision levels would be left unused: say so).
+  // The dialog always carries a feature size (the mesh's amount by default), so the Bilaplacian,
+  // whose time has no length unit, is not refused here as the CLI refuses it: it runs to its own stop.
   std::vector<LogLine> notes;
   if (opt.flow == FlowType::Bilaplacian && opt.featureSize != 0) {
     opt.featureSize = 0;
     notes.push_back({Severity::Info, "the Bilaplacian flow takes no feature size (its time has no length unit); "
                                      "it ran to its own stop"});
   }
-  if (opt.subdivisionLevels > 0 && opt.featureSize > 0 &&  // (auto is none with subdivision levels)
-      (opt.scheme == Scheme::Automatic || opt.scheme == Scheme::Vector))
-    notes.push_back({Severity::Warning, "the subdivision levels were not used: a feature size keeps the mesh's "
-                                        "vertices; set 'Feature size' to 0 to fair coarse to fine, to the limit shape"});
   FairingResult r = runFairing(std::move(mesh), std::move(selection), opt, job.colorByMeanCurvature, RepairHints::MeshLab);
   r.log.insert(r.log.begin(), notes.begin(), notes.end());
   const std::string warning = limitWarning(r.report.stop, filterSpec(FilterId::Fairing, {}), opt);

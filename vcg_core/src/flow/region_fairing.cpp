@@ -11,6 +11,7 @@
 #include "flow/constraints.h"
 #include "flow/fair_masked.h"
 #include "flow/region_guard.h"
+#include "mesh/box.h"
 #include "mesh/self_intersection.h"
 #include "mesh/submesh.h"
 
@@ -39,24 +40,6 @@ constexpr int kPieceRings = 3;
 // the scan beside it (a finger against the next one, an ear against the head). A region whose
 // result leaves that box is checked against the whole mesh's faces there (crossesOutside).
 constexpr double kObstacleMargin = 0.25;
-
-struct Box {
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
-  void add(const Vec3& p) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  bool meets(const Box& b) const { return (lo.array() <= b.hi.array()).all() && (b.lo.array() <= hi.array()).all(); }
-  bool contains(const Box& b) const { return (lo.array() <= b.lo.array()).all() && (b.hi.array() <= hi.array()).all(); }
-  Box grown(double d) const { return {lo - Vec3::Constant(d), hi + Vec3::Constant(d)}; }
-};
-
-Box boxOfFace(const TriMesh& mesh, const Face& t) {
-  Box b;
-  for (int v : t) b.add(mesh.positions[v]);
-  return b;
-}
 
 // The box of the flagged faces.
 Box boxOfFlagged(const TriMesh& mesh, const std::vector<std::uint8_t>& flags) {
@@ -119,7 +102,7 @@ std::optional<Piece> pieceAround(const TriMesh& mesh, const std::vector<std::uin
     std::unordered_map<int, int> local;
     for (std::size_t i = 0; i < sub.vertex.size(); ++i) local.emplace(sub.vertex[i], static_cast<int>(i));
     for (int f = 0; f < nf; ++f) {
-      if (inSub[f] || !boxOfFace(mesh, mesh.faces[f]).meets(p.obstacleBox)) continue;
+      if (inSub[f] || !boxOf(mesh, mesh.faces[f]).meets(p.obstacleBox)) continue;
       Face t;
       for (int k = 0; k < 3; ++k) {
         const int v = mesh.faces[f][k];
@@ -203,7 +186,7 @@ int addFacesMeeting(const TriMesh& mesh, const Piece& in, TriMesh& piece, const 
   std::unordered_map<int, int> local;
   for (int i = 0; i < in.keptVertices; ++i) local.emplace(in.vertex[i], i);  // the free ones have no outside face
   for (int f = 0; f < mesh.faceCount(); ++f) {
-    if (inPiece[f] || !boxOfFace(mesh, mesh.faces[f]).meets(box)) continue;
+    if (inPiece[f] || !boxOf(mesh, mesh.faces[f]).meets(box)) continue;
     Face t;
     for (int k = 0; k < 3; ++k) {
       const int v = mesh.faces[f][k];

@@ -1,4 +1,5 @@
 #include "mesh/self_intersection.h"
+#include "mesh/box.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,19 +9,6 @@
 
 namespace elastica {
 namespace {
-
-struct Box {
-  Vec3 lo, hi;
-};
-
-Box boxOf(const TriMesh& m, const Face& f) {
-  const Vec3 &a = m.positions[f[0]], &b = m.positions[f[1]], &c = m.positions[f[2]];
-  return {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
-}
-
-bool overlap(const Box& x, const Box& y) {
-  return (x.lo.array() <= y.hi.array()).all() && (y.lo.array() <= x.hi.array()).all();
-}
 
 // How many vertices faces f and g share; with exactly one, its positions in f and g.
 int sharedVertices(const Face& f, const Face& g, int& inF, int& inG) {
@@ -86,15 +74,15 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
   for (int f = 0; f < nf; ++f) boxes[f] = boxOf(m, m.faces[f]);
   std::vector<std::uint8_t> inGrid(nf, 1);
   if (only) {
-    Box flagged{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+    Box flagged;  // empty
     for (int f = 0; f < nf; ++f)
       if ((*only)[f]) {
         flagged.lo = flagged.lo.cwiseMin(boxes[f].lo);
         flagged.hi = flagged.hi.cwiseMax(boxes[f].hi);
       }
-    for (int f = 0; f < nf; ++f) inGrid[f] = (*only)[f] || overlap(boxes[f], flagged);
+    for (int f = 0; f < nf; ++f) inGrid[f] = (*only)[f] || boxes[f].meets(flagged);
   }
-  Box all{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  Box all;
   double extentSum = 0;
   int gridFaces = 0;
   for (int f = 0; f < nf; ++f) {
@@ -141,7 +129,7 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
 
   auto test = [&](int f, int g) {
     if (only && !(*only)[f] && !(*only)[g]) return false;
-    if (!overlap(boxes[f], boxes[g])) return false;
+    if (!boxes[f].meets(boxes[g])) return false;
     return visit(std::min(f, g), std::max(f, g));
   };
   for (std::size_t a = 0; a < entries.size();) {
