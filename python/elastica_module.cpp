@@ -302,7 +302,7 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   opt.progress = hook.hook();
   const int inV = mesh.vertexCount(), inF = mesh.faceCount();
   app::FairingResult r = withoutGil(hook, [&] {
-    return app::runFairing(std::move(mesh), std::move(region), opt, /*outputCurvature=*/true);
+    return app::runFairing(std::move(mesh), std::move(region), opt, /*outputCurvature=*/false);
   });
   return py::make_tuple(vertexArray(r.mesh), faceArray(r.mesh),
                         toPython(app::fairingReport(r.report, opt, inV, inF, &r)));

@@ -245,3 +245,44 @@ TEST(Curvature, MeasuredInPiecesAsWhole) {
     }
   }
 }
+
+// A mesh changed in one place has its energy change measured there only (a region's report): the
+// same as the difference of two whole measures, to rounding, whether vertices moved, a face went
+// (every later face shifts down one index, and a hole opens a boundary), an edge flipped, the
+// vertices were renumbered, or nothing changed (exactly 0).
+TEST(Curvature, EnergyChangeMeasuredWhereTheMeshChanged) {
+  TriMesh before = shapes::torus(3, 1, 40, 20);
+  shapes::addRadialNoise(before, 0.05, 7);
+  auto expectChange = [&](const TriMesh& after, const char* what) {
+    const double whole = measureCurvature(after).energy - measureCurvature(before).energy;
+    EXPECT_NEAR(curvatureEnergyChange(before, after), whole, 1e-12 * measureCurvature(before).energy) << what;
+  };
+  EXPECT_EQ(curvatureEnergyChange(before, before), 0.0);
+
+  TriMesh moved = before;
+  for (int v : {5, 6, 45, 300}) moved.positions[v] *= 1.01;
+  expectChange(moved, "moved");
+
+  TriMesh holed = before;
+  holed.faces.erase(holed.faces.begin() + 100);
+  expectChange(holed, "a face removed");
+
+  TriMesh flipped = before;  // faces 2k and 2k+1 of shapes::torus share a quad's diagonal
+  const Face a = flipped.faces[60], b = flipped.faces[61];
+  std::vector<int> shared, other;
+  for (int v : a) (std::find(b.begin(), b.end(), v) != b.end() ? shared : other).push_back(v);
+  for (int v : b)
+    if (std::find(a.begin(), a.end(), v) == a.end()) other.push_back(v);
+  ASSERT_EQ(shared.size(), 2u);
+  ASSERT_EQ(other.size(), 2u);
+  flipped.faces[60] = {other[0], other[1], shared[0]};
+  flipped.faces[61] = {other[1], other[0], shared[1]};
+  ASSERT_NO_THROW(measureCurvature(flipped));
+  expectChange(flipped, "an edge flipped");
+
+  TriMesh renumbered = before;  // the last vertex first: every vertex at another index
+  std::rotate(renumbered.positions.rbegin(), renumbered.positions.rbegin() + 1, renumbered.positions.rend());
+  for (Face& t : renumbered.faces)
+    for (int& v : t) v = (v + 1) % renumbered.vertexCount();
+  expectChange(renumbered, "renumbered");
+}

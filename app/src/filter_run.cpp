@@ -135,22 +135,19 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   JobOptions job;
   job.flow = opt;
   checkOptions(FilterId::Fairing, job);
-  checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, hints);
+  const CurvatureMeasureOptions measure{opt.area, opt.curvature};
+  r.meshEnergyBefore = measureCurvature(checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, hints), mesh, measure).energy;
   if (region && region->faces.empty()) throw InvalidInputError("the region to fair has no faces");
   const bool selected = region.has_value();
-  const std::vector<Face> inputFaces = mesh.faces;
-  const std::vector<Vec3> inputPositions = mesh.positions;
+  const TriMesh input = mesh;
   const int inVertices = mesh.vertexCount();
   r.diagonal = boundingBoxDiagonal(mesh.positions);
-  const CurvatureMeasureOptions measure{opt.area, opt.curvature};
-  r.meshEnergyBefore = measureCurvature(mesh, measure).energy;
   const double meanEdge = meanFaceEdge(mesh, faces);
   // The default amount that raises the energy of what it fairs has collapsed a feature smaller
   // than it into a needle (the principal part shrinks what it smooths): half of it, and so on. A
   // region run says so itself (its guard gives the input back, StopReason::Unchanged). An amount
   // the user chose runs as chosen; the log says when the energy rose.
   const bool halve = r.amount.automatic && opt.featureSize > 0;
-  TriMesh work = halve ? mesh : TriMesh{};
   std::optional<MeshCurvature> measured;  // of the whole result, when the halving rule measured it
   for (;;) {
     r.report = selected ? fair(mesh, *region, opt) : fair(mesh, opt);
@@ -161,7 +158,7 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     if (!rose) break;
     measured.reset();
     if (r.amount.halvings == kAmountHalvings) {
-      mesh = std::move(work);
+      mesh = input;
       r.report.stop = StopReason::Unchanged;
       r.report.refusedBecause = "every fairing amount down to " + number(opt.featureSize, "%.6g") +
                                 " raised the energy";
@@ -170,17 +167,17 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     }
     ++r.amount.halvings;
     opt.featureSize /= 2;
-    mesh = work;
+    mesh = input;
   }
   r.amount.featureSize = opt.featureSize > 0 ? opt.featureSize : 0;
   r.amount.edges = meanEdge > 0 ? r.amount.featureSize / meanEdge : 0;
   const FlowReport& report = r.report;
 
-  r.connectivityChanged = mesh.faces != inputFaces;
+  r.connectivityChanged = mesh.faces != input.faces;
   if (!r.connectivityChanged && mesh.vertexCount() == inVertices) {
     double sum = 0, largest = 0;
     for (int v = 0; v < inVertices; ++v) {
-      const double d = (mesh.positions[v] - inputPositions[v]).norm();
+      const double d = (mesh.positions[v] - input.positions[v]).norm();
       sum += d * d;
       largest = std::max(largest, d);
     }
@@ -188,9 +185,16 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     r.movedMax = largest;
   }
   r.outputCurvature = outputCurvature;
-  if (!measured) measured = measureCurvature(mesh, measure);
-  r.meshEnergyAfter = measured->energy;
-  if (outputCurvature) r.curvature = std::move(*measured);
+  // A region's run changed the mesh near the region only: its energy after is the input's plus the
+  // change there (the same value up to the order of the sums), not a second whole-mesh measure
+  // (0.23 s of a 1,000-face region's run on a 280k-vertex scan).
+  if (!measured && selected && !outputCurvature) {
+    r.meshEnergyAfter = r.meshEnergyBefore + curvatureEnergyChange(input, mesh, measure);
+  } else {
+    if (!measured) measured = measureCurvature(mesh, measure);
+    r.meshEnergyAfter = measured->energy;
+    if (outputCurvature) r.curvature = std::move(*measured);
+  }
   r.log.push_back({Severity::Info, std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) +
                                        " vertices, " + std::to_string(report.steps) + " steps in " +
                                        number(report.seconds, "%.2f") + " s (" + labelOf(report.stop) + ")"});

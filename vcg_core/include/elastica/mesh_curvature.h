@@ -4,6 +4,7 @@
 
 #include <elastica/curvature.h>
 #include <elastica/geometry.h>
+#include <elastica/topology.h>
 #include <elastica/types.h>
 
 #include <cstddef>
@@ -39,6 +40,21 @@ struct MeshCurvature {
 /// @throws InvalidInputError on a non-manifold edge, a face index out of range or a face that
 ///         repeats a vertex.
 MeshCurvature measureCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt = {});
+
+/// measureCurvature() on the caller's Topology of `mesh` (Topology(mesh.vertexCount(), mesh.faces)),
+/// for a caller that has built it already (an input check): the same values.
+MeshCurvature measureCurvature(const Topology& topo, const TriMesh& mesh, const CurvatureMeasureOptions& opt = {});
+
+/// The total curvature energy of `after` minus that of `before`, measured only where they differ:
+/// on the vertices whose fan differs (a face of it missing from the other mesh, or a vertex of it at
+/// another position or index), each on its faces. For a mesh that changed in a small region (a
+/// region's fair: faces off it keep their index and value) this costs a few linear passes over the
+/// faces instead of two whole measures. measureCurvature(after).energy − measureCurvature(before).energy
+/// up to the order of the sums (and a face degenerate to 1e-12 of the edge length, whose threshold
+/// follows the measured part's mean edge length, as measureCurvatureInPieces()). With the paper's λ
+/// rule (global) it is that difference, measured whole.
+/// @throws InvalidInputError as measureCurvature().
+double curvatureEnergyChange(const TriMesh& before, const TriMesh& after, const CurvatureMeasureOptions& opt = {});
 
 /// measureCurvature() a piece at a time, for large meshes: the vertices in blocks of
 /// `pieceVertices`, each measured on the faces around it, so that the memory beyond the mesh and

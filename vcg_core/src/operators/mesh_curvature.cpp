@@ -4,12 +4,16 @@
 #include <elastica/topology.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 namespace elastica {
 
 MeshCurvature measureCurvature(const TriMesh& mesh, const CurvatureMeasureOptions& opt) {
-  const Topology topo(mesh.vertexCount(), mesh.faces);
+  return measureCurvature(Topology(mesh.vertexCount(), mesh.faces), mesh, opt);
+}
+
+MeshCurvature measureCurvature(const Topology& topo, const TriMesh& mesh, const CurvatureMeasureOptions& opt) {
   const Geometry geo = computeGeometry(topo, mesh.positions, opt.area);
   const Curvature c = computeCurvature(topo, geo, mesh.positions, opt.curvature);
   MeshCurvature out;
@@ -123,6 +127,98 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
   for (int v = 0; v < nv; ++v) out.degenerate.isolatedVertices += !used[v];
   out.eulerCharacteristic = static_cast<int>(nv - edges + mesh.faceCount());
   return out;
+}
+
+}  // namespace elastica
+
+namespace elastica {
+
+namespace {
+
+// Σ of the energy terms of the vertices marked in `marked` (indices past the mesh's end are
+// ignored), each on its whole fan: the piece is every face at a marked vertex, on its vertices in
+// the mesh's order.
+double energyAt(const TriMesh& mesh, const std::vector<std::uint8_t>& marked, const CurvatureMeasureOptions& opt) {
+  const int nv = mesh.vertexCount();
+  std::vector<std::uint8_t> inPiece(nv, 0);
+  TriMesh piece;
+  for (const Face& t : mesh.faces) {
+    bool at = false;
+    for (int v : t) {
+      if (v < 0 || v >= nv) return measureCurvature(mesh, opt).energy;  // let it throw its message
+      at = at || marked[v];
+    }
+    if (!at) continue;
+    piece.faces.push_back(t);
+    for (int v : t) inPiece[v] = 1;
+  }
+  if (piece.faces.empty()) return 0;
+  std::vector<int> local(nv, -1);
+  std::vector<std::uint8_t> own;
+  for (int v = 0; v < nv; ++v) {
+    if (!inPiece[v]) continue;
+    local[v] = piece.vertexCount();
+    piece.positions.push_back(mesh.positions[v]);
+    own.push_back(marked[v]);
+  }
+  for (Face& t : piece.faces)
+    for (int& v : t) v = local[v];
+  const Topology topo(piece.vertexCount(), piece.faces);
+  Geometry geo;
+  computeGeometry(topo, piece.positions, opt.area, geo, &own);
+  const Curvature c = computeCurvature(topo, geo, piece.positions, opt.curvature);
+  return totalCurvatureEnergy(topo, geo, c, &own);
+}
+
+// A face as a key that ignores where its vertex list starts (not its orientation).
+std::array<int, 3> faceKey(const Face& t) {
+  const int k = t[0] <= t[1] && t[0] <= t[2] ? 0 : (t[1] <= t[2] ? 1 : 2);
+  return {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
+}
+
+}  // namespace
+
+double curvatureEnergyChange(const TriMesh& before, const TriMesh& after, const CurvatureMeasureOptions& opt) {
+  if (opt.curvature.h2k == H2KTreatment::PaperLambda) return measureCurvature(after, opt).energy - measureCurvature(before, opt).energy;
+  const int nb = before.vertexCount(), na = after.vertexCount(), n = std::max(nb, na);
+  // A vertex "moved" if it is not at the same index and position in both.
+  std::vector<std::uint8_t> moved(n, 1);
+  for (int v = 0; v < std::min(nb, na); ++v) moved[v] = !(before.positions[v] == after.positions[v]);
+  auto kept = [&](const Face& t) {
+    for (int v : t)
+      if (v < 0 || v >= n || moved[v]) return false;
+    return true;
+  };
+  // A face is the same in both if it is in both (first by index, then by value) with no vertex moved.
+  const int fb = before.faceCount(), fa = after.faceCount();
+  std::vector<std::uint8_t> sameB(fb, 0), sameA(fa, 0);
+  for (int f = 0; f < std::min(fb, fa); ++f)
+    sameB[f] = sameA[f] = before.faces[f] == after.faces[f] && kept(before.faces[f]);
+  auto unmatchedKeys = [&](const TriMesh& m, const std::vector<std::uint8_t>& same) {
+    std::vector<std::array<int, 3>> keys;
+    for (int f = 0; f < m.faceCount(); ++f)
+      if (!same[f] && kept(m.faces[f])) keys.push_back(faceKey(m.faces[f]));
+    std::sort(keys.begin(), keys.end());
+    return keys;
+  };
+  const std::vector<std::array<int, 3>> keysB = unmatchedKeys(before, sameB), keysA = unmatchedKeys(after, sameA);
+  auto matchByValue = [&](const TriMesh& m, std::vector<std::uint8_t>& same, const std::vector<std::array<int, 3>>& other) {
+    for (int f = 0; f < m.faceCount(); ++f)
+      if (!same[f] && kept(m.faces[f])) same[f] = std::binary_search(other.begin(), other.end(), faceKey(m.faces[f]));
+  };
+  matchByValue(before, sameB, keysA);
+  matchByValue(after, sameA, keysB);
+  // The vertices whose fan differs: those of a face that is not the same, in either mesh.
+  std::vector<std::uint8_t> marked(n, 0);
+  auto markChanged = [&](const TriMesh& m, const std::vector<std::uint8_t>& same) {
+    for (int f = 0; f < m.faceCount(); ++f)
+      if (!same[f])
+        for (int v : m.faces[f])
+          if (v >= 0 && v < n) marked[v] = 1;
+  };
+  markChanged(before, sameB);
+  markChanged(after, sameA);
+  return energyAt(after, marked, opt) - energyAt(before, marked, opt);
 }
 
 }  // namespace elastica
