@@ -165,12 +165,21 @@ step "the fairing and fill filters in MeshLab 2022.02 (run_filter) against elast
 rm -rf "$root/work" && mkdir -p "$root/work"
 ex=/src/elastica/meshlab_plugin/examples
 run() { in_root env OMP_NUM_THREADS=1 HOME=/work "$@"; }
+# A display number free here and in the root: xvfb-run -a looks only at the root's /tmp, but X
+# servers share the host's abstract sockets, so an Xvfb of a test beside this run (on :99, xvfb-run's
+# first choice) made the root's Xvfb fail and MeshLab abort ("could not connect to display :99").
+free_display() {
+  local n
+  for ((n = 200 + $$ % 500; ; ++n)); do
+    [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n || -e $root/tmp/.X$n-lock ]] || { echo "$n"; return; }
+  done
+}
 run /build/elastica/bin/elastica generate icosphere --level 3 --noise 0.05 -o /work/noisy.ply >/dev/null
 run /build/elastica/bin/elastica run -i /work/noisy.ply -o /work/fair_run.ply -s $ex/fairing.mlx
-run xvfb-run -a /build/run_filter/run_filter $plugins /work/noisy.ply /work/fair_meshlab.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \
+run xvfb-run -a -n "$(free_display)" /build/run_filter/run_filter $plugins /work/noisy.ply /work/fair_meshlab.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \
   || fail "the fairing filter in MeshLab 2022.02 differs from elastica run (or did not run)"
 run /build/elastica/bin/elastica run -i /src/elastica/data/bunny_flank_hole.ply -o /work/fill_run.ply -s $ex/fill_holes.mlx
-run xvfb-run -a /build/run_filter/run_filter $plugins /src/elastica/data/bunny_flank_hole.ply /work/fill_meshlab.ply $ex/fill_holes.mlx \
+run xvfb-run -a -n "$(free_display)" /build/run_filter/run_filter $plugins /src/elastica/data/bunny_flank_hole.ply /work/fill_meshlab.ply $ex/fill_holes.mlx \
   /work/fill_run.ply 1e-5 || fail "the fill filter in MeshLab 2022.02 differs from elastica run (or did not run)"
 # The hand-written torus cage (data/cages), split three times, faired to the Clifford torus: the screenshot's mesh.
 # MeshLab keeps positions in float: the split cage (written in double) goes through MeshLab first (a
@@ -178,18 +187,19 @@ run xvfb-run -a /build/run_filter/run_filter $plugins /src/elastica/data/bunny_f
 # remeshing stages decide differently: 1223 vertices by `elastica run`, 1261 in MeshLab.
 run /build/elastica/bin/elastica subdivide /src/elastica/data/cages/torus_quad_5x5.off --levels 3 -o /work/torus_double.ply >/dev/null
 printf '<!DOCTYPE FilterScript>\n<FilterScript>\n</FilterScript>\n' >"$root/work/no_filter.mlx"
-run xvfb-run -a /build/run_filter/run_filter $plugins /work/torus_double.ply /work/torus.ply /work/no_filter.mlx >/dev/null 2>&1 \
+run xvfb-run -a -n "$(free_display)" /build/run_filter/run_filter $plugins /work/torus_double.ply /work/torus.ply /work/no_filter.mlx >/dev/null 2>&1 \
   || fail "MeshLab 2022.02 could not read and write the torus"
 run /build/elastica/bin/elastica run -i /work/torus.ply -o /work/torus_run.ply -s $ex/fairing.mlx >/dev/null
-run xvfb-run -a /build/run_filter/run_filter $plugins /work/torus.ply /work/torus_meshlab.ply $ex/fairing.mlx /work/torus_run.ply 1e-5 \
+run xvfb-run -a -n "$(free_display)" /build/run_filter/run_filter $plugins /work/torus.ply /work/torus_meshlab.ply $ex/fairing.mlx /work/torus_run.ply 1e-5 \
   || fail "the fairing filter in MeshLab 2022.02 differs from elastica run on the torus (or did not run)"
 cp "$root"/work/*_meshlab.ply "$out/"
+
 
 # ---------------------------------------------------------------- 4. a screenshot of MeshLab 2022.02
 if [[ -n "$shot" ]]; then
   step "screenshot: MeshLab 2022.02 with the faired torus and the Filters menu"
   cp "$src/packaging/meshlab2022/screenshot.sh" "$root/work/screenshot.sh"
-  run xvfb-run -a -s "-screen 0 1600x900x24" bash /work/screenshot.sh /work/torus_meshlab.ply /work/shot.png \
+  run xvfb-run -a -n "$(free_display)" -s "-screen 0 1600x900x24" bash /work/screenshot.sh /work/torus_meshlab.ply /work/shot.png \
     || fail "no screenshot"
   mkdir -p "$(dirname "$shot")"
   cp "$root/work/shot.png" "$shot"
@@ -202,12 +212,12 @@ in_root apt-get remove -y -qq meshlab-plugin-elastica >/dev/null
 in_root test ! -e $plugins/libfilter_elastica.so || fail "the plugin is still in $plugins"
 cp "$src/packaging/meshlab2022/load_plugins.sh" "$out/libfilter_elastica.so" "$root/work/"
 rm -rf "$root/work/.local"
-run xvfb-run -a -s "-screen 0 1600x900x24" bash /work/load_plugins.sh /work/libfilter_elastica.so /work/load_plugins.png \
+run xvfb-run -a -n "$(free_display)" -s "-screen 0 1600x900x24" bash /work/load_plugins.sh /work/libfilter_elastica.so /work/load_plugins.png \
   || fail "Load Plugins did not take the file"
 extra=$(cd "$root" && find work/.local -name libfilter_elastica.so -printf '/%h\n' | head -n1)
 [[ -n "$extra" ]] || fail "MeshLab did not copy the plugin into its extra-plugins folder"
 echo "MeshLab copied it into $extra"
 cp "$root/work/load_plugins.png" "$out/"
-run xvfb-run -a /build/run_filter/run_filter "$plugins:$extra" /work/noisy.ply /work/fair_loaded.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \
+run xvfb-run -a -n "$(free_display)" /build/run_filter/run_filter "$plugins:$extra" /work/noisy.ply /work/fair_loaded.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \
   || fail "the fairing filter of the loaded plugin differs from elastica run (or did not run)"
 step "done"

@@ -14,6 +14,9 @@ wait_window() {  # NAME SECONDS: the first window called NAME
   done
   return 1
 }
+# The X server first: a MeshLab started before Xvfb takes clients aborts ("could not connect to display").
+for _ in $(seq 50); do xdotool getdisplaygeometry >/dev/null 2>&1 && break; sleep 0.2; done
+xdotool getdisplaygeometry >/dev/null 2>&1 || fail "no X server on display ${DISPLAY:-(unset)}"
 meshlab >/tmp/meshlab-load.log 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
