@@ -65,8 +65,10 @@ INSTANTIATE_TEST_SUITE_P(LibcgalDemo, RealShape,
 
 // knot1 (a knotted tube, genus 1): the elastica flow swells the tube until it presses against
 // itself; the embedding guard holds the vertices that would cross, step after step. The stop says
-// so (not "converged", not "stalled"), in few attempts (67 measured), and the output keeps its
-// genus and does not cross itself.
+// so (not "converged", not "stalled"), in few attempts, and the output keeps its genus and does
+// not cross itself. A self-contact end is a result as a converged one is: resolved (Loop-subdivided
+// once, E within 2 %; measured: 57 attempts, E 263.57, Loop-1 +1.5 %, after one refinement where
+// the gap was; +4.5 % before the check applied to it).
 TEST(RealShapes, KnottedTubeStopsAtSelfContactWithoutCrossing) {
   TriMesh m = readSample("knot1.off");
   ASSERT_EQ(genus(m), 1);
@@ -77,7 +79,11 @@ TEST(RealShapes, KnottedTubeStopsAtSelfContactWithoutCrossing) {
   EXPECT_LE(r.steps, 200);
   EXPECT_EQ(genus(m), 1);
   EXPECT_EQ(test::selfIntersections(m), 0);
-  EXPECT_LT(test::energyOf(m), 0.7 * before);
+  const double energy = test::energyOf(m);
+  EXPECT_LT(energy, 0.7 * before);
+  TriMesh loop = m;
+  subdivideLoop(loop);
+  EXPECT_LE(test::energyOf(loop), 1.02 * energy);
 }
 
 // Scans and a CAD part with handles (issue 40): the default fair() must end with a true stop, on

@@ -40,15 +40,10 @@ enum class Scheme {
   /// descent direction, so τ grows to the region's own scale. Asked of a comparison flow, fair()
   /// runs the Laplacian-of-H flow semi-implicit and the bilaplacian flow explicit instead.
   Vector,
-  /// Vector where the input's moving region has at least kVectorVerticesPerHandle · (genus + 1)
-  /// vertices (any genus-0 region, a disk included; subdivisions asked for do not count),
-  /// semi-implicit below, or where the vector scheme cannot take its first step (docs/options.md).
-  /// FlowReport::scheme says which ran.
+  /// Vector, or semi-implicit where the vector scheme cannot take its first step
+  /// (docs/options.md). FlowReport::scheme says which ran.
   Automatic,
 };
-
-/// Scheme::Automatic's threshold (see there).
-inline constexpr int kVectorVerticesPerHandle = 600;
 
 /// How vertices on the mesh boundary behave.
 enum class BoundaryMode {

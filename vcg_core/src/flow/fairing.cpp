@@ -472,17 +472,13 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
   }
 }
 
-// Scheme::Automatic: the vector scheme unless the region has handles resolved by fewer than
-// kVectorVerticesPerHandle vertices each (the genus of a closed mesh; a region with a border
-// counts as a disk: closedGenus). Judged on the input's own vertices, the subdivisions asked for
-// not counted: a cage's handles are drawn by a few vertices however finely it is subdivided, and
-// the semi-implicit scheme gets there sooner (docs/benchmarks.md, "The schedule's rules").
-Scheme automaticScheme(const MovingRegion& region, int genus) {
-  if (genus == 0) return Scheme::Vector;
-  const long long moving = region.roles().freeCount;
-  return moving >= static_cast<long long>(kVectorVerticesPerHandle) * (genus + 1) ? Scheme::Vector
-                                                                                  : Scheme::SemiImplicit;
-}
+// Scheme::Automatic: the vector scheme, handles or not (the semi-implicit one only where the vector
+// scheme cannot take its first step: fallsBackToSemiImplicit). Until the resolution check and the
+// handles' step rules, meshes with handles under 600 vertices a handle ran semi-implicit: eight
+// and double-torus-example (genus 2, 315 and 231 vertices) stalled there after 328 and 364
+// attempts, and converge vector in 72 and 66; the block cages at --subdivide 2 and 3 took 184–755
+// attempts there, 50–87 vector (docs/benchmarks.md, "Shapes with handles").
+Scheme automaticScheme(const MovingRegion&, int) { return Scheme::Vector; }
 
 void requireMovingVertex(const FlowState& state) {
   if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
@@ -532,6 +528,9 @@ void keepIfBest(KeptState& kept, const MovingRegion& region, double energy, int 
   if (!(energy < kept.energy) && kept.level == level) return;
   kept = {region.mesh(), region.selection(), energy, level};
 }
+// Halvings of the remeshing's edges around faces it made cross (remeshMovingRegion), on meshes with
+// handles: femur's tunnels are 0.4 of its median edge wide.
+constexpr int kCrossingRefinements = 4;
 // Refinements where the schedule would have stopped converged on an unresolved state.
 constexpr int kMaxUnresolvedRefinements = 3;
 
@@ -643,6 +642,12 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     // semi-implicit stalled at E 134.5, vector converged at 112.3; docs/benchmarks.md).
     if (requested.scheme == Scheme::Automatic && opt.flow == FlowType::Elastica)
       opt.scheme = report.scheme = Scheme::Vector;
+  } else if (quality && !run.timeLimited() && genus > 0 &&
+             remeshMovingRegion(region, false, 1, 0, nullptr, kCrossingRefinements)) {
+    // Sheets closer than the edge length (femur: 0.4 median edges) made both remeshings cross:
+    // refined where they crossed instead (without, the raw scan was untangled into crossing faces
+    // and every vector step was refused for them).
+    ++report.remeshings;
   } else if (opt.scheme == Scheme::Vector) {
     untangleMovingRegion(region, false, report);
   }
@@ -666,7 +671,9 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     report.vertexBudget = fixed + movingBudget * (1LL << (2 * std::max(0, opt.subdivisionLevels - level)));
   }
   for (;; ++level) {
-    if (remeshAdaptively && remeshMovingRegion(region, true, 1, movingBudget)) ++report.remeshings;
+    if (remeshAdaptively &&
+        remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0))
+      ++report.remeshings;
     remeshAdaptively = false;
     FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
     requireMovingVertex(state);
@@ -715,16 +722,19 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     NextStage next = schedule.next({end, stage.steps, stage.energy}, context, report.stop);
     // A run never says converged on a state its mesh does not resolve: refined where the gap is,
     // it flows on (kMaxUnresolvedRefinements times at most); else it says stalled.
-    if (next == NextStage::Stop && checkResolution && opt.scheme == Scheme::Vector && measured &&
-        report.stop == StopReason::Converged && !resolution.resolved()) {
+    // A surface pressed against itself (self_contact) is a result too, and the same promise: a
+    // knotted tube swollen against itself ended at Loop-1 +4.5 % (knot1).
+    const bool final = report.stop == StopReason::Converged || report.stop == StopReason::SelfContact;
+    if (next == NextStage::Stop && checkResolution && opt.scheme == Scheme::Vector && measured && final &&
+        !resolution.resolved()) {
       if (unresolvedRefinements < kMaxUnresolvedRefinements && !context.stopped() &&
-          remeshMovingRegion(region, true, 1, movingBudget, &resolution.unresolved)) {
+          remeshMovingRegion(region, true, 1, movingBudget, &resolution.unresolved, kCrossingRefinements)) {
         ++unresolvedRefinements;
         ++report.remeshings;
         --level;
         continue;
       }
-      if (report.stop == StopReason::Converged) report.stop = StopReason::Stalled;
+      report.stop = StopReason::Stalled;
     }
     if (next == NextStage::Stop) break;
     if (next == NextStage::Refine) {

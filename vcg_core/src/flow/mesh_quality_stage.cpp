@@ -49,6 +49,9 @@ constexpr int kMaxGrowth = 8;  // a remeshing leaves at most 8× the vertices (+
 constexpr double kMaxEdgeToTarget = 1000;
 // remeshMovingRegion within a budget: fits of the targets after the first, before giving up.
 constexpr int kBudgetAttempts = 2;
+// remeshMovingRegion's `crossingRefinements`: the targets within this many target edge lengths of
+// a face the remeshing made cross are halved for the next try.
+constexpr double kCrossingReach = 3;
 // A flowed mesh needs remeshing below this angle or above this κℓ (needsRemeshing).
 constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
 
@@ -136,6 +139,22 @@ bool adopt(MovingRegion& moving, TriMesh&& rewritten, const std::vector<std::uin
     out = std::move(rewritten);
     return true;
   });
+}
+
+// remeshMovingRegion's crossing refinement: the targets of `mesh`'s vertices within `reach` of a
+// face of `remeshed` that crosses another are halved.
+void halveTargetsNearCrossings(const TriMesh& mesh, const TriMesh& remeshed, double reach, std::vector<double>& sigma) {
+  std::vector<Vec3> centres;
+  for (int f : selfIntersectingFaces(remeshed, nullptr)) {
+    const Face& t = remeshed.faces[f];
+    centres.push_back((remeshed.positions[t[0]] + remeshed.positions[t[1]] + remeshed.positions[t[2]]) / 3);
+  }
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+    for (const Vec3& c : centres)
+      if ((mesh.positions[v] - c).norm() <= reach) {
+        sigma[v] *= 0.5;
+        break;
+      }
 }
 
 }  // namespace
@@ -251,7 +270,7 @@ long long vertexBudget(long long moving, int genus) {
 }
 
 bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving,
-                        const std::vector<std::uint8_t>* refineAt) {
+                        const std::vector<std::uint8_t>* refineAt, int crossingRefinements) {
   const TriMesh& mesh = moving.mesh();
   const Topology& topo = moving.topology();
   const VertexRoles& roles = moving.roles();
@@ -308,29 +327,39 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   const long long fixed = mesh.vertexCount() - roles.freeCount;
   TriMesh remeshed;
   std::vector<std::uint8_t> remeshedRegion;
-  double aim = static_cast<double>(maxMoving);
-  for (int attempt = 0;; ++attempt) {
-    std::vector<double> fitted = sigma;
-    if (maxMoving > 0) fitTargets(mesh, region, fitted, aim);
-    remeshed = mesh;
-    remeshedRegion = region;
-    std::vector<std::uint8_t> movable = roles.free;
-    remeshRegion(remeshed, remeshedRegion, fitted, movable, options);
-    const long long left = remeshed.vertexCount() - fixed;
-    if (maxMoving <= 0 || left <= maxMoving) break;
-    if (attempt == kBudgetAttempts) return false;
-    aim *= static_cast<double>(maxMoving) / left;
+  for (int refinement = 0;; ++refinement) {
+    double aim = static_cast<double>(maxMoving);
+    for (int attempt = 0;; ++attempt) {
+      std::vector<double> fitted = sigma;
+      if (maxMoving > 0) fitTargets(mesh, region, fitted, aim);
+      remeshed = mesh;
+      remeshedRegion = region;
+      std::vector<std::uint8_t> movable = roles.free;
+      remeshRegion(remeshed, remeshedRegion, fitted, movable, options);
+      const long long left = remeshed.vertexCount() - fixed;
+      if (maxMoving <= 0 || left <= maxMoving) break;
+      if (attempt == kBudgetAttempts) return false;
+      aim *= static_cast<double>(maxMoving) / left;
+    }
+    region.swap(remeshedRegion);  // remeshedRegion: the flags before
+    // A remeshing that stacks vertices at one point is undone, also where the mesh crossed itself
+    // before and the crossing test cannot judge it (a noisy region of the lion's head scan: the
+    // adaptive remeshing left 49 vertices at one point and the next stage's energy at 4,000 times
+    // the last). Comparing the crossing counts instead undid the cow's first remeshing (its input
+    // crosses at 137 faces), which then never became round.
+    if (stacksVertices(remeshed, region)) return false;
+    if (local ? selfIntersectingFaces(remeshed, &region).size() > crossingBefore
+              : !crossedBefore && selfIntersects(remeshed)) {
+      // Two sheets of the surface closer than the target edge (a narrow tunnel, a thin wall): the
+      // remesher's flips and moves put one through the other. Edges half as long within a few
+      // target lengths of every crossing face, and again, resolve the gap where it is.
+      if (local || refinement >= crossingRefinements) return false;
+      halveTargetsNearCrossings(mesh, remeshed, kCrossingReach * target, sigma);
+      region.swap(remeshedRegion);  // the flags before, for the next try
+      continue;
+    }
+    break;
   }
-  region.swap(remeshedRegion);  // remeshedRegion: the flags before
-  // A remeshing that stacks vertices at one point is undone, also where the mesh crossed itself
-  // before and the crossing test cannot judge it (a noisy region of the lion's head scan: the
-  // adaptive remeshing left 49 vertices at one point and the next stage's energy at 4,000 times
-  // the last). Comparing the crossing counts instead undid the cow's first remeshing (its input
-  // crosses at 137 faces), which then never became round.
-  if (stacksVertices(remeshed, region)) return false;
-  if (local ? selfIntersectingFaces(remeshed, &region).size() > crossingBefore
-            : !crossedBefore && selfIntersects(remeshed))
-    return false;
   // Where crossings cannot judge it (a noisy region crossing itself), a remeshing that leaves the
   // region's energy kRemeshBlowUp times its value is a folded surface, not a resampled one: the
   // devil mannequin's noisy region 1 went from E 883 to 207,260, and every step after was refused.

@@ -81,8 +81,11 @@ double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 /// null) asks for edges half as long as they are now around the flagged vertices, below the
 /// curvature's target: where a Loop subdivision showed that the mesh does not resolve its shape
 /// (flow/resolution_check.h).
+/// `crossingRefinements` (0: none) tries again that many times where a whole-mesh remeshing made
+/// faces cross, with the targets halved around the crossing faces each time: two sheets closer than
+/// the edge length (femur: a tunnel 0.4 target edges wide) need edges of their gap there.
 bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1, long long maxMoving = 0,
-                        const std::vector<std::uint8_t>* refineAt = nullptr);
+                        const std::vector<std::uint8_t>* refineAt = nullptr, int crossingRefinements = 0);
 
 /// A CAD tessellation's long thin triangles, split toward the edge length of remeshMovingRegion's
 /// isotropic target (moving faces only, one pass without relaxation): no input vertex moves and
