@@ -365,8 +365,7 @@ const char* option(int argc, char** argv, const char* name, const char* fallback
 }  // namespace
 
 // ---------------------------------------------------------------- resolution
-// The default pipeline (Scheme::Automatic with remeshing: the vector scheme, or the semi-implicit
-// one on handles under kVectorVerticesPerHandle vertices), the semi-implicit pipeline and the
+// The default pipeline (Scheme::Automatic with remeshing: the vector scheme), the semi-implicit pipeline and the
 // paper's explicit scheme on tori R/r = 3 at several resolutions: steps to the stop, wall time, R/r
 // (least-squares fit of a torus of revolution about z) and E. The explicit runs stop at the
 // plateau or `explicitSeconds`.

@@ -106,9 +106,8 @@ std::vector<ParamSpec> flowRows(const std::string& prefix, Flow flow) {
   rows.push_back(enumRow<Scheme>(
       prefix + "scheme", {"scheme", "--scheme", "scheme", "scheme"}, [flow](auto& j) -> auto& { return flow(j).scheme; },
       "Time integration",
-      "Automatic: Vector, or Semi-implicit on coarse meshes with handles. Explicit: the paper's tiny steps.",
-      "auto (fair's default: vector, or semi-implicit on meshes with handles and under 600 vertices per "
-      "handle before any subdivision), vector (implicit in the positions, adaptive steps that move vertices tangentially too, with "
+      "Automatic: Vector, or Semi-implicit where Vector takes no first step. Explicit: the paper's tiny steps.",
+      "auto (fair's default: vector, or semi-implicit where the vector scheme cannot take its first step), vector (implicit in the positions, adaptive steps that move vertices tangentially too, with "
       "remeshing), semi-implicit (fill's default: implicit in the 4th-order part, normal moves) or explicit "
       "(the paper's step; the bilaplacian flow's only scheme)"));
   // 0 is "no limit" on every face (the core's field takes the largest count instead).

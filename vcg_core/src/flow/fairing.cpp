@@ -472,13 +472,6 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
   }
 }
 
-// Scheme::Automatic: the vector scheme, handles or not (the semi-implicit one only where the vector
-// scheme cannot take its first step: fallsBackToSemiImplicit). Until the resolution check and the
-// handles' step rules, meshes with handles under 600 vertices a handle ran semi-implicit: eight
-// and double-torus-example (genus 2, 315 and 231 vertices) stalled there after 328 and 364
-// attempts, and converge vector in 72 and 66; the block cages at --subdivide 2 and 3 took 184–755
-// attempts there, 50–87 vector (docs/benchmarks.md, "Shapes with handles").
-Scheme automaticScheme(const MovingRegion&, int) { return Scheme::Vector; }
 
 void requireMovingVertex(const FlowState& state) {
   if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
@@ -570,11 +563,15 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
                       const StageEnded& stageEnded) {
   // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
   FlowOptions opt = requested;
-  // The handles decide the automatic scheme and vectorStage's neck rule in the first stage.
+  // The handles decide vectorStage's neck rule in the first stage, the budget and the resolution check.
   const int genus = closedGenus(region.topology());
-  // A fairing amount needs no scheme choice: its filter is linear (featureSizeStage).
-  if (opt.scheme == Scheme::Automatic)
-    opt.scheme = opt.featureSize > 0 ? Scheme::Vector : automaticScheme(region, genus);
+  // Scheme::Automatic: the vector scheme, handles or not (the semi-implicit one only where the vector
+  // scheme cannot take its first step: fallsBackToSemiImplicit). Until the resolution check and the
+  // handles' step rules, meshes with handles under 600 vertices a handle ran semi-implicit: eight
+  // and double-torus-example (genus 2, 315 and 231 vertices) stalled there after 328 and 364
+  // attempts, and converge vector in 72 and 66; the block cages at --subdivide 2 and 3 took 184–755
+  // attempts there, 50–87 vector (docs/benchmarks.md, "Shapes with handles").
+  if (opt.scheme == Scheme::Automatic) opt.scheme = Scheme::Vector;
   if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
   if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
   FlowReport report;
@@ -636,12 +633,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   } else if (quality && !run.timeLimited() && remeshMovingRegion(region, false)) {
     ++report.remeshings;
   } else if (quality && !run.timeLimited() && remeshTessellation(region)) {
-    ++report.remeshings;
-    // A CAD part's flow starts from a fresh triangulation, not from a cage's few vertices that
-    // automaticScheme leaves to the semi-implicit scheme: the vector scheme's (joint, genus 2:
-    // semi-implicit stalled at E 134.5, vector converged at 112.3; docs/benchmarks.md).
-    if (requested.scheme == Scheme::Automatic && opt.flow == FlowType::Elastica)
-      opt.scheme = report.scheme = Scheme::Vector;
+    ++report.remeshings;  // a CAD part's flow starts from a fresh triangulation (remeshTessellation)
   } else if (quality && !run.timeLimited() && genus > 0 &&
              remeshMovingRegion(region, false, 1, 0, nullptr, kCrossingRefinements)) {
     // Sheets closer than the edge length (femur: 0.4 median edges) made both remeshings cross:
