@@ -63,11 +63,12 @@ rev=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
 dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v -e '^?? ' -e 'docs/benchmarks.md' | wc -l || true)
 [[ $dirty == 0 ]] || rev="$rev (with uncommitted changes)"
 
-# The real-shape and denoising sections have their own, slower runs (bench/real_shapes.sh --page,
-# bench/denoise.sh): kept as they were.
+# The real-shape, denoising and regions sections have their own, slower runs (bench/real_shapes.sh
+# --page, bench/denoise.sh, bench/region_sweep.py by hand): kept as they were.
 real_shapes=$(sed -n '/^<!-- real-shapes:/,/^<!-- \/real-shapes -->/p' "$page" 2>/dev/null || true)
 real_shapes_notes=$(sed -n '/^<!-- real-shapes-notes/,/^<!-- \/real-shapes-notes -->/p' "$page" 2>/dev/null || true)
 denoising=$(sed -n '/^<!-- denoise/,/^<!-- \/denoise -->/p' "$page" 2>/dev/null || true)
+regions=$(sed -n '/^<!-- regions:/,/^<!-- \/regions -->/p' "$page" 2>/dev/null || true)
 {
   cat "$root/bench/benchmarks_header.md"
   cat <<EOF
@@ -167,6 +168,9 @@ EOF
   fi
   if [[ -n $denoising ]]; then
     printf '\n## Denoising against MeshLab\n\n%s\n' "$denoising"
+  fi
+  if [[ -n $regions ]]; then
+    printf '\n## Regions: fair() on a selected part of a scan (issue 42)\n\n%s\n' "$regions"
   fi
 } >"$page"
 echo "run_benchmarks: wrote $page" >&2

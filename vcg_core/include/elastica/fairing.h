@@ -53,10 +53,9 @@ FlowReport fair(TriMesh& mesh, const FlowOptions& opt = {});
 /// new vertices fill the slots of the vertices that moved, ascending, then are appended; faces off
 /// the region keep their index and value; the region's faces fill its slots, ascending, then are
 /// appended. If the region comes back with fewer vertices (or faces) than it had, the slots left
-/// over are removed and the vertices (faces) after them move down, keeping their order. If nothing
-/// the piece's run reached passes the checks below, the region runs again on the whole mesh with
-/// the selection, in what remains of maxSteps and maxSeconds (a stopgap: docs/benchmarks.md,
-/// "Regions"); FlowReport::steps and seconds count both runs.
+/// over are removed and the vertices (faces) after them move down, keeping their order. The whole
+/// mesh is never flowed: if nothing the piece's run reached passes the checks below, the input
+/// comes back (StopReason::Unchanged).
 ///
 /// The output is checked against the input before it is returned: a manifold mesh (nothing
 /// beyond the input's own defects), no two vertices of the region's faces or their neighbours at

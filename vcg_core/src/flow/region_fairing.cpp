@@ -16,9 +16,7 @@
 #include "mesh/submesh.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
-#include <limits>
 #include <optional>
 #include <numeric>
 #include <string>
@@ -317,7 +315,6 @@ FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt) {
     throw InvalidInputError(std::string("fair: the region's ") + e.what());
   }
   validateFlowOptions(opt);
-  const auto start = std::chrono::steady_clock::now();
   std::optional<Piece> piece = pieceAround(mesh, selection, opt.boundary);
   if (!piece) {  // the region and its rings are the whole mesh: the run works on it in place
     FlowReport report = fairGuarded(mesh, selection, opt);
@@ -345,24 +342,6 @@ FlowReport fair(TriMesh& mesh, const FaceSet& region, const FlowOptions& opt) {
       refused = "faces of the region cross the mesh beyond the faces near it";
   }
   if (refused.empty() && report.stop == StopReason::Unchanged) refused = report.refusedBecause;
-  // A stopgap: where nothing the piece's run reached passed (two regions of 10,000 faces, a third
-  // of man.off and of mannequin-devil: the piece's first remeshing was kept where the whole
-  // mesh's was undone, and the flow took no step from it), the region is run as before this
-  // change, on the whole mesh with the selection, in what remains of the limits. Not for a cancel.
-  if (report.stop == StopReason::Unchanged && report.keptStage < 0) {
-    const double spent = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    FlowOptions rest = opt;
-    if (opt.maxSeconds > 0) rest.maxSeconds = opt.maxSeconds - spent;
-    if (opt.maxSteps != std::numeric_limits<long long>::max()) rest.maxSteps = opt.maxSteps - report.steps;
-    if ((opt.maxSeconds <= 0 || rest.maxSeconds > 0) && rest.maxSteps > 0) {
-      FlowReport whole = fairGuarded(mesh, selection, rest);
-      whole.steps += report.steps;
-      whole.rejectedSteps += report.rejectedSteps;
-      whole.seconds += report.seconds;
-      whole.regionFaces = FaceSet::fromFlags(selection).faces;
-      return whole;
-    }
-  }
   if (!refused.empty()) {
     report.refusedBecause = refused;
     report.regionEnergyAfter = report.regionEnergyBefore;

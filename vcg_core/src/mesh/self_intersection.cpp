@@ -112,18 +112,38 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
   std::vector<std::uint8_t> large(nf, 0);
   std::vector<std::pair<std::uint64_t, int>> entries;
   entries.reserve(static_cast<std::size_t>(nf) * 4);
-  for (int f = 0; f < nf; ++f) {
-    if (!inGrid[f]) continue;
-    lo[f] = cellOf(boxes[f].lo);
-    hi[f] = cellOf(boxes[f].hi);
-    const std::int64_t cells = (hi[f][0] - lo[f][0] + 1) * (hi[f][1] - lo[f][1] + 1) * (hi[f][2] - lo[f][2] + 1);
-    if (cells > kMaxCellsPerFace) {
-      large[f] = 1;
-      continue;
+  // With `only`, the flagged faces' cells first; an unflagged face enters only the cells a flagged
+  // face covers (a pair needs a flagged face, and it is tested in a cell both cover): the fixed
+  // faces around a moving region (a region's obstacles, the rest of a scan) mostly lie in cells no
+  // moving face reaches, and sorting them was a fifth of a 50,000-face region's step. The pairs
+  // tested, and their order within a cell, are those of the full grid.
+  std::vector<std::uint64_t> flaggedCells;
+  for (int pass = only ? 0 : 1; pass < 2; ++pass) {
+    for (int f = 0; f < nf; ++f) {
+      if (!inGrid[f]) continue;
+      if (only && (pass == 0) != ((*only)[f] != 0)) continue;
+      lo[f] = cellOf(boxes[f].lo);
+      hi[f] = cellOf(boxes[f].hi);
+      const std::int64_t cells = (hi[f][0] - lo[f][0] + 1) * (hi[f][1] - lo[f][1] + 1) * (hi[f][2] - lo[f][2] + 1);
+      if (cells > kMaxCellsPerFace) {
+        large[f] = 1;
+        continue;
+      }
+      const bool filtered = only && pass == 1;
+      for (std::int64_t i = lo[f][0]; i <= hi[f][0]; ++i)
+        for (std::int64_t j = lo[f][1]; j <= hi[f][1]; ++j)
+          for (std::int64_t k = lo[f][2]; k <= hi[f][2]; ++k) {
+            const std::uint64_t here = key(i, j, k);
+            if (filtered && !std::binary_search(flaggedCells.begin(), flaggedCells.end(), here)) continue;
+            entries.emplace_back(here, f);
+          }
     }
-    for (std::int64_t i = lo[f][0]; i <= hi[f][0]; ++i)
-      for (std::int64_t j = lo[f][1]; j <= hi[f][1]; ++j)
-        for (std::int64_t k = lo[f][2]; k <= hi[f][2]; ++k) entries.emplace_back(key(i, j, k), f);
+    if (pass == 0) {
+      flaggedCells.reserve(entries.size());
+      for (const auto& e : entries) flaggedCells.push_back(e.first);
+      std::sort(flaggedCells.begin(), flaggedCells.end());
+      flaggedCells.erase(std::unique(flaggedCells.begin(), flaggedCells.end()), flaggedCells.end());
+    }
   }
   std::sort(entries.begin(), entries.end());
 
