@@ -543,12 +543,17 @@ void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report)
 }
 
 // The working resolution of a CAD tessellation whose isotropic remeshing was refused: its long
-// edges split first (splitLongEdges: no input vertex moves), then remeshed. The region is as it
-// came if either step is refused.
+// edges split first (splitLongEdges: no input vertex moves), then remeshed to edges sized by the
+// part's thinnest feature (cadWorkingEdgeLength, measured on the input), or, if that remeshing is
+// refused or the part has no measurable thickness, at the split mesh's own size. The region is as
+// it came if every step is refused.
 bool remeshTessellation(MovingRegion& region) {
   TriMesh mesh = region.mesh();
   std::vector<std::uint8_t> selection = region.selection();
+  const double working = cadWorkingEdgeLength(region);
   if (!splitLongEdges(region)) return false;
+  const double target = isotropicTargetEdge(region);
+  if (working > 0 && target > 0 && remeshMovingRegion(region, false, working / target)) return true;
   if (remeshMovingRegion(region, false)) return true;
   region.edit([&](TriMesh& out, std::vector<std::uint8_t>& sel) {
     out = std::move(mesh);

@@ -3,6 +3,7 @@
 #include "flow/region_guard.h"
 #include "mesh/self_intersection.h"
 #include "mesh/patch_remeshing.h"
+#include "mesh/thickness.h"
 
 #include <elastica/geometry.h>
 #include <elastica/mesh_curvature.h>
@@ -54,6 +55,9 @@ constexpr int kBudgetAttempts = 2;
 constexpr double kCrossingReach = 3;
 // A flowed mesh needs remeshing below this angle or above this κℓ (needsRemeshing).
 constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
+// cadWorkingEdgeLength(): edges across the thinnest feature, the area fraction of the surface
+// thinner than the feature that decides (one sliver or chamfer does not).
+constexpr double kEdgesAcrossThinnest = 3, kThinnestQuantile = 0.1;
 
 // Faces whose three vertices are all free: the region a remeshing may rewrite.
 std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& roles) {
@@ -261,6 +265,24 @@ bool splitLongEdges(MovingRegion& moving) {
   if (split.vertexCount() == mesh.vertexCount()) return false;
   if (!selfIntersects(mesh) && selfIntersects(split)) return false;
   return adopt(moving, std::move(split), region);
+}
+
+double isotropicTargetEdge(const MovingRegion& moving) {
+  const TriMesh& mesh = moving.mesh();
+  return std::sqrt(4 * medianFaceArea(mesh, movingFaces(mesh, moving.roles())) / std::sqrt(3.0));
+}
+
+double cadWorkingEdgeLength(const MovingRegion& moving) {
+  if (!moving.selection().empty() || moving.topology().boundaryEdgeCount() > 0) return 0;
+  const TriMesh& mesh = moving.mesh();
+  const double thinnest = thinnestFeature(mesh, kThinnestQuantile);
+  if (!(thinnest > 0) || !std::isfinite(thinnest)) return 0;
+  double area = 0;
+  medianFaceArea(mesh, movingFaces(mesh, moving.roles()), &area);
+  // An equilateral mesh of edge h has about 2A / (√3 h²) vertices on area A.
+  const long long budget = vertexBudget(moving.roles().freeCount, closedGenus(moving.topology()));
+  const double finest = std::sqrt(2 * area / (std::sqrt(3.0) * static_cast<double>(budget)));
+  return std::max(thinnest / kEdgesAcrossThinnest, finest);
 }
 
 long long vertexBudget(long long moving, int genus) {

@@ -97,6 +97,18 @@ bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coa
 /// nothing was split, an edge is a vertex thrown far away, or the split made faces cross.
 bool splitLongEdges(MovingRegion& region);
 
+/// The edge length of a CAD tessellation's working resolution (issue 40 item 3): a few edges
+/// (kEdgesAcrossThinnest) across the part's thinnest feature (thinnestFeature, mesh/thickness.h:
+/// a low quantile of the local thickness), so the flow moves the part, not its triangulation; no
+/// shorter than the edge of an equilateral remeshing of the moving area into vertexBudget(moving
+/// vertices, genus) vertices. 0 (no such size) on a mesh with a boundary or a selection, or whose
+/// thickness cannot be measured.
+double cadWorkingEdgeLength(const MovingRegion& region);
+
+/// The edge length remeshMovingRegion aims at with `coarsening` 1: an equilateral triangle of the
+/// moving faces' median area.
+double isotropicTargetEdge(const MovingRegion& region);
+
 /// The moving vertices a flow of genus `genus` needs at the current level: those it has now
 /// (`moving`) plus what curvature-adaptive remeshing of a fair shape adds. Edges of 0.4/κ put
 /// κ²/(0.4² · √3/2) ≈ 7.2 κ² vertices on a unit of area, and ∫κ² ≤ E, the energy, which a fair
