@@ -472,7 +472,6 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
   }
 }
 
-
 void requireMovingVertex(const FlowState& state) {
   if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
     throw InvalidInputError(

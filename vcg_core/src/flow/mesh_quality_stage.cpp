@@ -88,6 +88,25 @@ double medianFaceArea(const TriMesh& mesh, const std::vector<std::uint8_t>& regi
   return areas[areas.size() / 2];
 }
 
+// The edge of an equilateral triangle of the flagged faces' median area, sqrt(4A / √3): the
+// isotropic remeshing's target (the mean would follow a refined neck down).
+double equilateralEdge(const TriMesh& mesh, const std::vector<std::uint8_t>& region) {
+  return std::sqrt(4 * medianFaceArea(mesh, region) / std::sqrt(3.0));
+}
+
+// Whether a flagged face has an edge kMaxEdgeToTarget times `target` or longer (or not finite):
+// not a surface to remesh but a vertex thrown far away (fuzzing found one that made the remesher
+// split for minutes). Such a mesh is left to the flow, which refuses or repairs it step by step.
+bool hasFarVertex(const TriMesh& mesh, const std::vector<std::uint8_t>& region, double target) {
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    if (!region[f]) continue;
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k)
+      if (!((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm() <= kMaxEdgeToTarget * target)) return true;
+  }
+  return false;
+}
+
 // H and K of the region's mesh as measureCurvature() gives them (its default options), on the
 // region's topology instead of a new one. H in the flow's sign: the callers read only |H| and H²,
 // which the reported sign (its negation) leaves bit for bit the same.
@@ -247,14 +266,8 @@ std::vector<double> largestPrincipalCurvature(const MovingRegion& region) {
 bool splitLongEdges(MovingRegion& moving) {
   const TriMesh& mesh = moving.mesh();
   std::vector<std::uint8_t> region = movingFaces(mesh, moving.roles());
-  const double target = std::sqrt(4 * medianFaceArea(mesh, region) / std::sqrt(3.0));
-  if (!(target > 0)) return false;
-  for (int f = 0; f < mesh.faceCount(); ++f) {  // a vertex thrown far away (remeshMovingRegion)
-    if (!region[f]) continue;
-    const Face& t = mesh.faces[f];
-    for (int k = 0; k < 3; ++k)
-      if (!((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm() <= kMaxEdgeToTarget * target)) return false;
-  }
+  const double target = equilateralEdge(mesh, region);
+  if (!(target > 0) || hasFarVertex(mesh, region, target)) return false;
   TriMesh split = mesh;
   std::vector<std::uint8_t> none(mesh.positions.size(), 0);  // no vertex of the input moves
   std::vector<double> sigma(mesh.positions.size(), target);
@@ -269,7 +282,7 @@ bool splitLongEdges(MovingRegion& moving) {
 
 double isotropicTargetEdge(const MovingRegion& moving) {
   const TriMesh& mesh = moving.mesh();
-  return std::sqrt(4 * medianFaceArea(mesh, movingFaces(mesh, moving.roles())) / std::sqrt(3.0));
+  return equilateralEdge(mesh, movingFaces(mesh, moving.roles()));
 }
 
 double cadWorkingEdgeLength(const MovingRegion& moving) {
@@ -297,19 +310,8 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   const Topology& topo = moving.topology();
   const VertexRoles& roles = moving.roles();
   std::vector<std::uint8_t> region = movingFaces(mesh, roles);
-  // An equilateral triangle of the median face area (the mean would follow a refined neck down)
-  // has edge sqrt(4A / √3).
-  const double target = coarsening * std::sqrt(4 * medianFaceArea(mesh, region) / std::sqrt(3.0));
-  if (!(target > 0)) return false;
-  // Edges three orders of magnitude longer than the region's typical one are not a surface to
-  // remesh but a vertex thrown far away (fuzzing found one that made the remesher split for
-  // minutes): leave such a mesh to the flow, which refuses or repairs it step by step.
-  for (int f = 0; f < mesh.faceCount(); ++f) {
-    if (!region[f]) continue;
-    const Face& t = mesh.faces[f];
-    for (int k = 0; k < 3; ++k)
-      if (!((mesh.positions[t[k]] - mesh.positions[t[(k + 1) % 3]]).norm() <= kMaxEdgeToTarget * target)) return false;
-  }
+  const double target = coarsening * equilateralEdge(mesh, region);
+  if (!(target > 0) || hasFarVertex(mesh, region, target)) return false;
 
   // A mesh that crossed itself before is judged on a selection by the region's crossings (its
   // faces against the mesh): a scan that crosses itself somewhere else (the devil mannequin does)
