@@ -8,7 +8,9 @@ pin-hole a few edges around), E jumps (the vector scheme's elephant: 143.8, 187.
 
 Uses the `elastica` Python module (build it with the project: BUILD/python) for reading and for
 E = sum (4H^2 - 2K) A, exactly as `elastica curvature` computes it. Closed manifold meshes only
-(Warren's vertex weights; a border is refused).
+(a border is refused). Vertex weights are Loop's own, beta = (5/8 - (3/8 + cos(2 pi/k)/4)^2)/k;
+the core's subdivideLoop (the flow's resolution check) uses Warren's 3/(8k) (3/16 at k = 3). Both
+are 1/16 at valence 6, so the two differ only around irregular vertices.
 
   PYTHONPATH=build/python bench/loop_energy.py out.ply 2
 """
