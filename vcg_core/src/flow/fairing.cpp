@@ -539,7 +539,7 @@ constexpr double kTangledAngleDegrees = 1;
 // An untangling that makes faces cross where none crossed is undone: relaxed tangentially over
 // their slivers, the vertices of two CAD parts with thin walls slid through them (rotor 0 → 194
 // crossing faces, anchor 0 → 242), and the embedding guard then refused every step after
-// (docs/benchmarks.md, "Held-out CAD parts").
+// (docs/benchmarks.md, "Held-out CAD parts and the femur, traced").
 void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report) {
   const VertexRoles& roles = region.roles();
   if (roles.freeCount == 0 || !(always || isTangled(region.mesh(), roles.activeFace, kTangledAngleDegrees))) return;
