@@ -571,7 +571,8 @@ void refuseBrokenOutput(MovingRegion& region, TriMesh&& input, const FlowOptions
       return true;
     });
   } else {
-    report.refusedBecause = "no state of the run was kept below the input's energy";
+    report.refusedBecause = std::string(report.remeshings == 0 ? "no remeshing of it was accepted, and " : "") +
+                            "no state of the flow was kept below the input's energy";
   }
   report.keptStage = -1;
   report.stop = StopReason::Unchanged;
