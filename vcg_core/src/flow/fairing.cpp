@@ -676,7 +676,10 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     ++report.remeshings;
     opt.subdivisionLevels += coarseLevels;
     report.coarseStartLevels = coarseLevels;
-  } else if (quality && !run.timeLimited() && remeshMovingRegion(region, false)) {
+  } else if (quality && !run.timeLimited() && !(genus > 0 && isotropicEdgeMissesThinnest(region)) &&
+             remeshMovingRegion(region, false)) {
+    // A part with handles whose thin walls the isotropic edge would step over is sized by its
+    // thinnest feature instead (remeshTessellation, next).
     ++report.remeshings;
   } else if (quality && !run.timeLimited() && remeshTessellation(region)) {
     ++report.remeshings;  // a CAD part's flow starts from a fresh triangulation (remeshTessellation)
