@@ -79,3 +79,14 @@ TEST(CrossingRefinements, ResolveANarrowGapInsteadOfRefusingTheRemeshing) {
     EXPECT_EQ(closedGenus(refined.topology()), 1) << n;
   }
 }
+
+// The isotropic edge against the thinnest feature: a round torus (R 3, r 1, 48×16) has edges a
+// fifth of its tube's width, and is remeshed as it is; a thin ring drawn with long slivers (R 1,
+// r 0.01, 40 segments around the axis, 4 around the tube) has a median face whose equilateral edge
+// is several times its tube's width: an isotropic remeshing would step over it.
+TEST(IsotropicEdgeMissesThinnest, OnlyWhereTheEdgeIsSeveralTimesThePartsThinnestFeature) {
+  const MovingRegion round(shapes::torus(3, 1, 48, 16), {}, BoundaryMode::Fixed);
+  EXPECT_FALSE(isotropicEdgeMissesThinnest(round));
+  const MovingRegion thin(shapes::torus(1, 0.01, 40, 4), {}, BoundaryMode::Fixed);
+  EXPECT_TRUE(isotropicEdgeMissesThinnest(thin));
+}

@@ -74,7 +74,9 @@ enum class StopReason {
   /// fair(mesh, region, …): no state the run reached passed the output checks (a manifold mesh, no
   /// vertices at one point, no new crossing faces, the faces off the region bit for bit, the
   /// region's energy not above its start); the input came back unchanged. FlowReport::refusedBecause
-  /// says what failed.
+  /// says what failed. fair(mesh, …) on a whole mesh (to the limit shape, remeshing on): its output
+  /// crossed itself where the input did not, or no state of the run was kept (the output would be
+  /// the input); the input came back.
   Unchanged,
 };
 

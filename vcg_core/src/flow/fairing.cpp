@@ -6,6 +6,7 @@
 #include "flow/flow_state.h"
 #include "flow/mesh_quality_stage.h"
 #include "flow/principal_part_filter.h"
+#include "flow/region_guard.h"
 #include "flow/resolution_check.h"
 #include "flow/schedule.h"
 #include "flow/semi_implicit_integrator.h"
@@ -535,10 +536,47 @@ constexpr int kMaxUnresolvedRefinements = 3;
 // for it (NextStage::Untangle), as a remeshing pipeline would remesh. Reported as
 // FlowReport::untanglePasses; measurements: docs/benchmarks.md, "The schedule's rules".
 constexpr double kTangledAngleDegrees = 1;
+// An untangling that makes faces cross where none crossed is undone: relaxed tangentially over
+// their slivers, the vertices of two CAD parts with thin walls slid through them (rotor 0 → 194
+// crossing faces, anchor 0 → 242), and the embedding guard then refused every step after
+// (docs/benchmarks.md, "Held-out CAD parts and the femur, traced").
 void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report) {
   const VertexRoles& roles = region.roles();
   if (roles.freeCount == 0 || !(always || isTangled(region.mesh(), roles.activeFace, kTangledAngleDegrees))) return;
-  region.movePositions([&](TriMesh& mesh) { report.untanglePasses += untangle(mesh, roles.free, roles.activeFace); });
+  const bool crossedBefore = selfIntersects(region.mesh(), &roles.activeFace);
+  std::vector<Vec3> before = region.mesh().positions;
+  int passes = 0;
+  region.movePositions([&](TriMesh& mesh) { passes = untangle(mesh, roles.free, roles.activeFace); });
+  if (!crossedBefore && selfIntersects(region.mesh(), &roles.activeFace)) {
+    region.movePositions([&](TriMesh& mesh) { mesh.positions = std::move(before); });
+    return;
+  }
+  report.untanglePasses += passes;
+}
+
+// A whole mesh's output that crosses itself where its input did not is refused, and a run whose
+// output is its input says so: the input comes back with StopReason::Unchanged and the reason in
+// FlowReport::refusedBecause. No step's guard lets faces cross, but a state the schedule adopts
+// without a step can: on rotor and anchor an untangling and then remeshings made 511 and 245 faces
+// cross, every step after was refused, and the run said `stalled` on them.
+void refuseBrokenOutput(MovingRegion& region, TriMesh&& input, const FlowOptions& opt, FlowReport& report) {
+  if (report.stop == StopReason::Cancelled) return;
+  const bool crosses = !report.inputSelfIntersects && selfIntersects(region.mesh());
+  const bool same = region.mesh().faces == input.faces && region.mesh().positions == input.positions;
+  if (!crosses && !same) return;
+  if (crosses) {
+    report.refusedBecause = "faces of the output cross each other (the input's did not)";
+    region.edit([&](TriMesh& mesh, std::vector<std::uint8_t>&) {
+      mesh = std::move(input);
+      return true;
+    });
+  } else {
+    report.refusedBecause = std::string(report.remeshings == 0 ? "no remeshing of it was accepted, and " : "") +
+                            "no state of the flow was kept below the input's energy";
+  }
+  report.keptStage = -1;
+  report.stop = StopReason::Unchanged;
+  report.energyFinal = regionEnergy(region.mesh(), {}, opt);
 }
 
 // The working resolution of a CAD tessellation whose isotropic remeshing was refused: its long
@@ -607,6 +645,10 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   FlowOptions stageOpt = opt;
   if (quality) stageOpt.flipEdges = true;
   int level = 0;
+  // A whole mesh's input, for the check of its output (refuseBrokenOutput).
+  const bool wholeMesh = quality && region.selection().empty();
+  TriMesh input;
+  if (wholeMesh) input = region.mesh();
   if (quality) {
     level = report.preSubdivisions = subdivideToWorkingResolution(region, opt);
     // A selection's guard asks about the faces that move: crossings elsewhere in a scan leave it on.
@@ -634,7 +676,10 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     ++report.remeshings;
     opt.subdivisionLevels += coarseLevels;
     report.coarseStartLevels = coarseLevels;
-  } else if (quality && !run.timeLimited() && remeshMovingRegion(region, false)) {
+  } else if (quality && !run.timeLimited() && !(genus > 0 && isotropicEdgeMissesThinnest(region)) &&
+             remeshMovingRegion(region, false)) {
+    // A part with handles whose thin walls the isotropic edge would step over is sized by its
+    // thinnest feature instead (remeshTessellation, next).
     ++report.remeshings;
   } else if (quality && !run.timeLimited() && remeshTessellation(region)) {
     ++report.remeshings;  // a CAD part's flow starts from a fresh triangulation (remeshTessellation)
@@ -782,6 +827,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     });
     report.energyFinal = kept.energy;
   }
+  if (wholeMesh) refuseBrokenOutput(region, std::move(input), opt, report);
   report.seconds = run.elapsed();
   if (report.history.back().step != report.steps)
     report.history.push_back({report.steps, run.time, report.seconds, report.energyFinal});

@@ -58,6 +58,11 @@ constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
 // cadWorkingEdgeLength(): edges across the thinnest feature, the area fraction of the surface
 // thinner than the feature that decides (one sliver or chamfer does not).
 constexpr double kEdgesAcrossThinnest = 3, kThinnestQuantile = 0.1;
+// isotropicEdgeMissesThinnest(): an isotropic edge this many times the thinnest feature steps over
+// it. The scans and parts with handles that flow well run below 1.3 times; a flat washer remeshed
+// at 4.3 times became a ring too coarse for its shape (docs/benchmarks.md, "Held-out CAD parts and
+// the femur, traced").
+constexpr double kIsotropicOverThinnest = 2;
 
 // Faces whose three vertices are all free: the region a remeshing may rewrite.
 std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& roles) {
@@ -283,6 +288,13 @@ bool splitLongEdges(MovingRegion& moving) {
 double isotropicTargetEdge(const MovingRegion& moving) {
   const TriMesh& mesh = moving.mesh();
   return equilateralEdge(mesh, movingFaces(mesh, moving.roles()));
+}
+
+bool isotropicEdgeMissesThinnest(const MovingRegion& moving) {
+  if (!moving.selection().empty() || moving.topology().boundaryEdgeCount() > 0) return false;
+  const double thinnest = thinnestFeature(moving.mesh(), kThinnestQuantile);
+  if (!(thinnest > 0) || !std::isfinite(thinnest)) return false;
+  return isotropicTargetEdge(moving) > kIsotropicOverThinnest * thinnest;
 }
 
 double cadWorkingEdgeLength(const MovingRegion& moving) {

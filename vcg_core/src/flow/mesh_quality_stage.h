@@ -109,6 +109,13 @@ double cadWorkingEdgeLength(const MovingRegion& region);
 /// moving faces' median area.
 double isotropicTargetEdge(const MovingRegion& region);
 
+/// Whether the isotropic remeshing's edge (isotropicTargetEdge) is more than
+/// kIsotropicOverThinnest times the part's thinnest feature (thinnestFeature, as
+/// cadWorkingEdgeLength measures it): a remeshing at that size would fold the part's thin walls
+/// into a mesh that cannot resolve them. False on a mesh with a boundary or a selection, or whose
+/// thickness cannot be measured.
+bool isotropicEdgeMissesThinnest(const MovingRegion& region);
+
 /// The moving vertices a flow of genus `genus` needs at the current level: those it has now
 /// (`moving`) plus what curvature-adaptive remeshing of a fair shape adds. Edges of 0.4/κ put
 /// κ²/(0.4² · √3/2) ≈ 7.2 κ² vertices on a unit of area, and ∫κ² ≤ E, the energy, which a fair
