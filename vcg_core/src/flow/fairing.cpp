@@ -330,6 +330,11 @@ StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeT
   VectorIntegrator integrator;
   integrator.guardEmbedding(guardEmbedding);
   integrator.saddleStiffness(withHandles);
+  // On a selection, damped where its model overshoots (VectorIntegrator::dampOvershoots): a
+  // region's stage stalled by its refusals gained nothing from the schedule's reflows (their
+  // remeshings left the region as it was), where a whole mesh's stall leads to the remeshing that
+  // frees it (docs/benchmarks.md, "Regions: the step's model where it overshoots").
+  integrator.dampOvershoots(!state.selection().empty());
   const CountCrossings<VectorIntegrator> countCrossings{integrator, run.report};
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;

@@ -36,6 +36,9 @@ class SemiImplicitSystem {
   /// semidefinite for w ≥ 0), `edgeWeight` per edge of `topo`. Call after assembleMatrix().
   void addEdgeLaplacian(const Topology& topo, const std::vector<double>& edgeWeight, const std::vector<int>& freeIndex,
                         double scale);
+  /// Multiplies the assembled matrix's diagonal entry of `row` by `factor` (Marquardt's damping of
+  /// one unknown). Call after assembleMatrix().
+  void scaleDiagonal(int row, double factor) { K_.coeffRef(row, row) *= factor; }
   /// Forgets the pattern: call when the connectivity or the free vertices change.
   void reset() { patterned_ = false; }
 

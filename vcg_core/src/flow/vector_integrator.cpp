@@ -49,6 +49,10 @@ constexpr int kPreconditionFromRows = 20000;
 // An accepted step is carried on along its direction to at most this many times its length while
 // W keeps falling (VectorIntegrator::tryStep).
 constexpr double kMaxExtrapolation = 8;
+// VectorIntegrator::dampOvershoots: μ of a vertex that overshot for the first time, its growth each
+// time it overshoots again, and its decay after a step that needed no vertex held (μ below
+// kDampingStart is dropped).
+constexpr double kDampingStart = 1, kDampingGrow = 4, kDampingDecay = 0.5;
 
 }  // namespace
 
@@ -117,12 +121,32 @@ bool VectorIntegrator::addBarrierStiffness(const Topology& topo, const Geometry&
   return any;
 }
 
+// The first try's culprits of the current attempt, and their rings, get their μ raised.
+void VectorIntegrator::dampOvershoot(const Topology& topo) {
+  if (!dampOvershoots_ || overshot_.empty()) return;
+  raised_.assign(damping_.size(), 0);
+  auto raise = [&](int v) {
+    if (raised_[v]) return;
+    raised_[v] = 1;
+    damping_[v] = std::max(kDampingStart, damping_[v] * kDampingGrow);
+  };
+  for (int c : overshot_) {
+    raise(c);
+    for (int k = topo.ringBegin(c); k < topo.ringEnd(c); ++k) raise(topo.ringVertex(k));
+  }
+}
+
+void VectorIntegrator::relaxDamping() {
+  for (double& mu : damping_) mu = mu < kDampingStart ? 0 : mu * kDampingDecay;
+}
+
 bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   std::vector<Vec3>& positions = state.positions();
   lastRejectionCrossed_ = false;
   lastStepHeldContact_ = false;
   lastExtrapolation_ = 1;
   auto reject = [&] {
+    dampOvershoot(state.topology());
     positions = saved_;
     state.invalidate();
     return false;
@@ -137,6 +161,8 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   termBefore_ = bending_.term;
   const int nv = topo.vertexCount();
   const Curvature& curv = state.curvature();
+  if (static_cast<int>(damping_.size()) != nv) damping_.assign(nv, 0.0);  // a new mesh
+  overshot_.clear();
   auto assemble = [&](bool barrierStiffness) {
     solver_->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, freeIndex_, state.roles().freeCount,
                                    1.0, 0.5 * tau);
@@ -148,7 +174,10 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
       edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
     }
     solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, kCurvatureStiffness * tau);
-    return barrierStiffness && addBarrierStiffness(topo, geo, positions, activeFace, tau);
+    const bool withBarrier = barrierStiffness && addBarrierStiffness(topo, geo, positions, activeFace, tau);
+    for (int v = 0; v < nv; ++v)
+      if (freeIndex_[v] >= 0 && damping_[v] > 0) solver_->system.scaleDiagonal(freeIndex_[v], 1 + damping_[v]);
+    return withBarrier;
   };
   const bool withBarrier = assemble(true);
   saved_ = positions;
@@ -204,6 +233,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
       }
     }
     lastStepHeldContact_ = lastStepHeldContact_ || crossed;
+    if (round == 0 && !crossed) overshot_ = culprits_;  // faces turned over (a contact is no overshoot)
     const int allowed = crossed ? kMaxContactCulprits : kMaxCulprits;
     if (round == kMaxHoldRounds || static_cast<int>(culprits_.size()) > allowed) {
       if (crossed) ++crossingRejections_, lastRejectionCrossed_ = true;
@@ -219,6 +249,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
       std::partial_sort(rises_.begin(), rises_.begin() + take, rises_.end(), std::greater<>());
       double covered = 0;
       for (int k = 0; k < take && covered < after - before; ++k) covered += rises_[k].first, culprits_.push_back(rises_[k].second);
+      if (round == 0) overshot_ = culprits_;
       if (covered < after - before || static_cast<int>(culprits_.size()) > kMaxCulprits) return reject();
     }
     bool more = false;
@@ -273,6 +304,8 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     largest = std::max(largest, d.norm());
     largestNormal = std::max(largestNormal, std::abs(d.dot(normalBefore_[v])));
   }
+  if (overshot_.empty()) relaxDamping();
+  else dampOvershoot(topo);
   energyBefore_ = before;
   lastMove_ = largest;
   lastNormalMove_ = largestNormal;

@@ -45,6 +45,16 @@ class VectorIntegrator {
   /// 411 → 217 attempts, joint 199 → 161); on genus 0, whose saddles flow away, the stiffer
   /// matrix only shortens the large steps (cow 87 → 184, bull 145 → 313): off there.
   void saddleStiffness(bool on) { saddleStiffness_ = on; }
+  /// Marquardt's damping where the step's model overshoots: the vertices whose terms made a step's
+  /// first try raise W (or whose faces turned over), and their rings, get their rows' diagonal
+  /// multiplied by 1 + μ in the following solves (μ from 1, ×4 each time they overshoot again,
+  /// halved after every step that needed no vertex held, dropped below 1). The matrix lacks W's
+  /// nonlinearity there (a valence-3 or -4 vertex moving along the surface changes the cotangents
+  /// of its ring), and without the damping the same few vertices raised every first try, so that
+  /// the held retries and refusals kept τ far below the shape's time. Only preconditions: δ = 0
+  /// exactly where ∂W/∂X = 0. Off on whole meshes, where the refusals end a stage held back by its
+  /// mesh and the schedule remeshes it (measured: docs/benchmarks.md, "Regions").
+  void dampOvershoots(bool on) { dampOvershoots_ = on; }
   long long crossingRejections() const { return crossingRejections_; }
   /// Whether the last accepted step held vertices that would have made faces cross (a contact).
   bool lastStepHeldContact() const { return lastStepHeldContact_; }
@@ -53,12 +63,15 @@ class VectorIntegrator {
 
  private:
   void buildRows(const FlowState& state);
+  void dampOvershoot(const Topology& topo);
+  void relaxDamping();
   bool solve(const std::vector<Vec3>& gradient, double tau);
   bool addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
                            const std::vector<std::uint8_t>& activeFace, double tau);
 
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
   bool lastStepShortened_ = false, guardEmbedding_ = false, saddleStiffness_ = false, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
+  bool dampOvershoots_ = false;
   long long crossingRejections_ = 0;
   long long connectivityVersion_ = -1;
   std::vector<int> freeIndex_;
@@ -67,6 +80,9 @@ class VectorIntegrator {
   std::vector<Vec3> saved_, faceNormalBefore_, normalBefore_, delta_;
   std::vector<double> termBefore_;
   std::vector<std::uint8_t> held_;  // free vertices the current attempt keeps in place
+  std::vector<double> damping_;     // per vertex: its μ (dampOvershoots), kept across attempts
+  std::vector<int> overshot_;       // the current attempt's first-try culprits
+  std::vector<std::uint8_t> raised_;
   std::vector<int> culprits_;
   std::vector<std::pair<double, int>> rises_;
   BendingEnergy bending_;
