@@ -290,18 +290,27 @@ double isotropicTargetEdge(const MovingRegion& moving) {
   return equilateralEdge(mesh, movingFaces(mesh, moving.roles()));
 }
 
-bool isotropicEdgeMissesThinnest(const MovingRegion& moving) {
-  if (!moving.selection().empty() || moving.topology().boundaryEdgeCount() > 0) return false;
+namespace {
+
+// The part's thinnest feature (thinnestFeature at kThinnestQuantile) on a whole closed mesh; 0 on a
+// selection, a mesh with a boundary, or one whose thickness cannot be measured.
+double partThinnest(const MovingRegion& moving) {
+  if (!moving.selection().empty() || moving.topology().boundaryEdgeCount() > 0) return 0;
   const double thinnest = thinnestFeature(moving.mesh(), kThinnestQuantile);
-  if (!(thinnest > 0) || !std::isfinite(thinnest)) return false;
-  return isotropicTargetEdge(moving) > kIsotropicOverThinnest * thinnest;
+  return thinnest > 0 && std::isfinite(thinnest) ? thinnest : 0;
+}
+
+}  // namespace
+
+bool isotropicEdgeMissesThinnest(const MovingRegion& moving) {
+  const double thinnest = partThinnest(moving);
+  return thinnest > 0 && isotropicTargetEdge(moving) > kIsotropicOverThinnest * thinnest;
 }
 
 double cadWorkingEdgeLength(const MovingRegion& moving) {
-  if (!moving.selection().empty() || moving.topology().boundaryEdgeCount() > 0) return 0;
+  const double thinnest = partThinnest(moving);
+  if (thinnest == 0) return 0;
   const TriMesh& mesh = moving.mesh();
-  const double thinnest = thinnestFeature(mesh, kThinnestQuantile);
-  if (!(thinnest > 0) || !std::isfinite(thinnest)) return 0;
   double area = 0;
   medianFaceArea(mesh, movingFaces(mesh, moving.roles()), &area);
   // An equilateral mesh of edge h has about 2A / (√3 h²) vertices on area A.
