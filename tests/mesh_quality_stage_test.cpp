@@ -62,6 +62,19 @@ TEST(SplitLongEdges, SplitsSliversWithoutMovingTheInput) {
   EXPECT_FALSE(selfIntersects(split));
 }
 
+// A split has a bound: the 8×5 torus with one vertex thrown 256 edge lengths away (a fuzzed input)
+// needs about 30,000 vertices to bring every edge to the target, over 64× its 40 + 2,000; the split is
+// refused and the mesh kept as it came (without the bound the split was made, and the remeshings
+// after it ran for minutes under the sanitizers before the flow could check its time limit).
+TEST(SplitLongEdges, RefusesASplitPastItsBound) {
+  TriMesh thrown = shapes::torus(3, 1, 8, 5);
+  thrown.positions[7] *= 256;
+  MovingRegion region(thrown, {}, BoundaryMode::Fixed);
+  EXPECT_FALSE(splitLongEdges(region));
+  EXPECT_EQ(region.mesh().vertexCount(), thrown.vertexCount());
+  EXPECT_EQ(region.mesh().faces, thrown.faces);
+}
+
 // A fat torus whose hole is a slit (R 1, r 0.97: the hole's sides 0.06 apart, under a third of the
 // median edge): a remeshing at the median face's size makes faces cross there and is refused;
 // with the targets halved around the crossing faces (crossingRefinements) it resolves the gap

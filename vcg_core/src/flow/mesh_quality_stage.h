@@ -94,7 +94,8 @@ bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coa
 /// remeshing slides vertices over slivers a long way and can make faces cross (joint, a genus-2
 /// part of 221 vertices with corners under 0.5°; a washer of aspect-40 strips), and the remeshing
 /// is then refused; after the split its moves are short. False, with the region as it was, if
-/// nothing was split, an edge is a vertex thrown far away, or the split made faces cross.
+/// nothing was split, an edge is a vertex thrown far away, the split would pass its bound (64×
+/// the vertices + 2,000), or the split made faces cross.
 bool splitLongEdges(MovingRegion& region);
 
 /// The edge length of a CAD tessellation's working resolution (issue 40 item 3): a few edges

@@ -365,9 +365,10 @@ void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vecto
   remeshRegion(mesh, patchFace, sigma, movable, opt);
 }
 
-void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
+bool remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt) {
   PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale);
+  bool withinLimit = true;
   for (int round = 0; round < opt.iterations; ++round) {
     // A split pass changes no length and no edge's faces' flags: the next pass can only split
     // an edge at a vertex the pass made, and looks at those alone (in the same order).
@@ -376,7 +377,10 @@ void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vec
       const int made = mesh.vertexCount();
       bool any = false;
       for (const auto& [a, b] : edges) {
-        if (opt.maxVertices > 0 && mesh.vertexCount() >= opt.maxVertices) break;
+        if (opt.maxVertices > 0 && mesh.vertexCount() >= opt.maxVertices) {
+          withinLimit = false;
+          break;
+        }
         if (patch.length(a, b) > kSplitFactor * patch.target(a, b)) any = patch.split(a, b) || any;
       }
       if (!any) break;
@@ -388,6 +392,7 @@ void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vec
     patch.relaxPasses(opt.relaxPasses);
   }
   patch.compact();
+  return withinLimit;
 }
 
 }  // namespace elastica

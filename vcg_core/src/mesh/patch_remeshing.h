@@ -54,8 +54,9 @@ void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vecto
 /// `movable` (one byte per vertex; remeshPatch's "new" vertices) may move, be collapsed and be
 /// removed, the others never; new vertices are movable. `movable` and `sigma` follow the
 /// vertices. Every movable vertex must have a closed fan of region faces (a region's vertices
-/// two rings inside its border have).
-void remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
+/// two rings inside its border have). False if `opt.maxVertices` stopped a split pass (the
+/// region is remeshed all the same, with edges left longer than their targets).
+bool remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt = {});
 
 }  // namespace elastica
