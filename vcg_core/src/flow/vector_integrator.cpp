@@ -53,6 +53,11 @@ constexpr double kMaxExtrapolation = 8;
 // time it overshoots again, and its decay after a step that needed no vertex held (μ below
 // kDampingStart is dropped).
 constexpr double kDampingStart = 1, kDampingGrow = 4, kDampingDecay = 0.5;
+// VectorIntegrator::strainJumpLimit: the strain |δ_i − δ_j| / |X_i − X_j| of an edge that one step
+// may reach where it moves a vertex beyond its own jump limit. The first steps of man.off Loop ×2's
+// 50,000-face region went unshortened at strains of 0.4–0.5 and lowered W (docs/benchmarks.md,
+// "Regions: large selections").
+constexpr double kMaxStepStrain = 0.5;
 
 }  // namespace
 
@@ -140,6 +145,33 @@ void VectorIntegrator::relaxDamping() {
   for (double& mu : damping_) mu = mu < kDampingStart ? 0 : mu * kDampingDecay;
 }
 
+// How far the solved step δ goes beyond the jump limit (a factor; above 1 the step is shortened by
+// it). No vertex moves farther than InternalFlowOptions::maxJump of its own ring's mean edge; with
+// strainJumpLimit a step beyond that passes if no edge strains by more than kMaxStepStrain, and is
+// else shortened to the larger of the two lengths.
+double VectorIntegrator::jumpOvershoot(const FlowState& state) const {
+  const Topology& topo = state.topology();
+  double overshoot = 0;
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    if (freeIndex_[v] < 0) continue;
+    const double move = delta_[v].norm();
+    if (!std::isfinite(move)) return move;
+    double ring = 0;
+    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ring += (saved_[topo.ringVertex(k)] - saved_[v]).norm();
+    const double allowed = state.internalOptions().maxJump * ring / std::max(1, topo.valence(v));
+    if (move > 0) overshoot = std::max(overshoot, move / allowed);
+  }
+  if (!strainJumpLimit_ || overshoot <= 1) return overshoot;
+  double strain = 0;
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    const auto& ev = topo.edgeVertices(e);
+    if (freeIndex_[ev[0]] < 0 && freeIndex_[ev[1]] < 0) continue;
+    const double stretch = (delta_[ev[0]] - delta_[ev[1]]).norm();
+    if (stretch > 0) strain = std::max(strain, stretch / (kMaxStepStrain * (saved_[ev[0]] - saved_[ev[1]]).norm()));
+  }
+  return std::min(overshoot, strain);
+}
+
 bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   std::vector<Vec3>& positions = state.positions();
   lastRejectionCrossed_ = false;
@@ -187,18 +219,9 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   // ill-conditioned to factorise (pivots lost to rounding): the step is then solved without it.
   if (!solve(bending_.gradient, tau) && !(withBarrier && (assemble(false), solve(bending_.gradient, tau)))) return false;
 
-  // No vertex moves farther than InternalFlowOptions::maxJump of its mean edge lengths: a longer
-  // step is shortened (every displacement by the same factor), which keeps it a descent direction.
-  double overshoot = 0;
-  for (int v = 0; v < nv; ++v) {
-    if (freeIndex_[v] < 0) continue;
-    const double move = delta_[v].norm();
-    if (!std::isfinite(move)) return false;
-    double ring = 0;
-    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ring += (saved_[topo.ringVertex(k)] - saved_[v]).norm();
-    const double allowed = state.internalOptions().maxJump * ring / std::max(1, topo.valence(v));
-    if (move > 0) overshoot = std::max(overshoot, move / allowed);
-  }
+  // The jump limit (jumpOvershoot): a longer step is shortened (every displacement by the same
+  // factor), which keeps it a descent direction.
+  const double overshoot = jumpOvershoot(state);
   if (!std::isfinite(overshoot)) return false;
   lastStepShortened_ = overshoot > 1;
   const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;

@@ -55,6 +55,14 @@ class VectorIntegrator {
   /// exactly where ∂W/∂X = 0. Off on whole meshes, where the refusals end a stage held back by its
   /// mesh and the schedule remeshes it (measured: docs/benchmarks.md, "Regions").
   void dampOvershoots(bool on) { dampOvershoots_ = on; }
+  /// The jump limit asks whether a step strains the mesh, not only how far each vertex goes: a step
+  /// that moves a vertex farther than InternalFlowOptions::maxJump of its own ring's mean edge
+  /// still passes where no edge's ends move apart (or turn) by more than half its length. The
+  /// per-vertex limit binds a region's every step to the scan's smallest triangles, where the
+  /// region moves tens of edge lengths smoothly over them (a rigid motion strains nothing, and the
+  /// step's model, W's matrix at the old positions, changes with the strain, not with the
+  /// distance). On selections (measured: docs/benchmarks.md, "Regions: large selections").
+  void strainJumpLimit(bool on) { strainJumpLimit_ = on; }
   long long crossingRejections() const { return crossingRejections_; }
   /// Whether the last accepted step held vertices that would have made faces cross (a contact).
   bool lastStepHeldContact() const { return lastStepHeldContact_; }
@@ -63,6 +71,7 @@ class VectorIntegrator {
 
  private:
   void buildRows(const FlowState& state);
+  double jumpOvershoot(const FlowState& state) const;
   void dampOvershoot(const Topology& topo);
   void relaxDamping();
   bool solve(const std::vector<Vec3>& gradient, double tau);
@@ -71,7 +80,7 @@ class VectorIntegrator {
 
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
   bool lastStepShortened_ = false, guardEmbedding_ = false, saddleStiffness_ = false, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
-  bool dampOvershoots_ = false;
+  bool dampOvershoots_ = false, strainJumpLimit_ = false;
   long long crossingRejections_ = 0;
   long long connectivityVersion_ = -1;
   std::vector<int> freeIndex_;
