@@ -21,9 +21,10 @@ namespace elastica {
 /// appended, flipped faces renumbered in place). Remeshing (FlowOptions::remesh, the semi-implicit
 /// scheme's default) rewrites only faces whose three vertices move: vertices that do not move keep
 /// their position and their order, and their index unless the region lost more vertices than it
-/// gained and one would fall past the end; faces touching one keep their vertices (renumbered
-/// with them) and their order, and their index unless the region lost more faces than it gained
-/// and too few remain to fill the slots before the last of them (a border, remeshed coarse). The
+/// gained and one would fall past the end; faces touching one keep those vertices (renumbered
+/// with them; a moving corner moves, or is joined to a neighbour) and their order, and their index
+/// unless the region lost more faces than it gained and too few remain to fill the slots before
+/// the last of them (a border, remeshed coarse). The
 /// semi-implicit scheme with remeshing never returns crossing faces when the input had none.
 /// FlowReport::energyInitial is the energy where the first flow starts (after any subdivision
 /// made before it).
