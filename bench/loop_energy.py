@@ -8,11 +8,16 @@ pin-hole a few edges around), E jumps (the vector scheme's elephant: 143.8, 187.
 
 Uses the `elastica` Python module (build it with the project: BUILD/python) for reading and for
 E = sum (4H^2 - 2K) A, exactly as `elastica curvature` computes it. Closed manifold meshes only
-(a border is refused). Vertex weights are Loop's own, beta = (5/8 - (3/8 + cos(2 pi/k)/4)^2)/k;
+(a border is refused; with --border, an open mesh too: a border edge's point is its midpoint and a
+border vertex stays, so a fixed border stays where it was). Vertex weights are Loop's own, beta = (5/8 - (3/8 + cos(2 pi/k)/4)^2)/k;
 the core's subdivideLoop (the flow's resolution check) uses Warren's 3/(8k) (3/16 at k = 3). Both
 are 1/16 at valence 6, so the two differ only around irregular vertices.
 
-  PYTHONPATH=build/python bench/loop_energy.py out.ply 2
+  PYTHONPATH=build/python bench/loop_energy.py out.ply 2 [--border [--beyond R]]
+
+--beyond R also prints E over the vertices farther than R mean edge lengths (the level-0 mesh's)
+from the border: where a fixed border is the scan's own rough rows, Loop's smoothing of them
+raises E whatever the faired part does (mannequin-devil, docs/benchmarks.md "Regions").
 """
 import sys
 
@@ -21,24 +26,33 @@ import numpy as np
 import elastica
 
 
-def loop_subdivide(V, F):
-    """One Loop step: edge points 3/8, 3/8, 1/8, 1/8; vertices (1 - k beta) v + beta sum of ring."""
+def loop_subdivide(V, F, border=False):
+    """One Loop step: edge points 3/8, 3/8, 1/8, 1/8; vertices (1 - k beta) v + beta sum of ring.
+    With `border`, a border edge's point is its midpoint and a border vertex stays."""
     opposite = {}
     for a, b, c in F:
         for u, v, w in ((a, b, c), (b, c, a), (c, a, b)):
             opposite.setdefault((min(u, v), max(u, v)), []).append(w)
-    if any(len(o) != 2 for o in opposite.values()):
-        raise SystemExit("loop_energy: the mesh has a border or a non-manifold edge")
+    if any(len(o) > 2 or (len(o) != 2 and not border) for o in opposite.values()):
+        raise SystemExit("loop_energy: the mesh has a border (see --border) or a non-manifold edge")
     n = len(V)
     index = {e: n + i for i, e in enumerate(opposite)}
     out = np.zeros((n + len(opposite), 3))
     ring = [[] for _ in range(n)]
-    for (a, b), (c, d) in opposite.items():
+    on_border = np.zeros(n, bool)
+    for (a, b), o in opposite.items():
         ring[a].append(b)
         ring[b].append(a)
-        out[index[(a, b)]] = 3 / 8 * (V[a] + V[b]) + 1 / 8 * (V[c] + V[d])
+        if len(o) == 1:
+            on_border[[a, b]] = True
+            out[index[(a, b)]] = (V[a] + V[b]) / 2
+        else:
+            out[index[(a, b)]] = 3 / 8 * (V[a] + V[b]) + 1 / 8 * (V[o[0]] + V[o[1]])
     for v in range(n):
         k = len(ring[v])
+        if on_border[v] or k == 0:
+            out[v] = V[v]
+            continue
         beta = (5 / 8 - (3 / 8 + np.cos(2 * np.pi / k) / 4) ** 2) / k
         out[v] = (1 - k * beta) * V[v] + beta * V[ring[v]].sum(0)
     faces = []
@@ -48,17 +62,41 @@ def loop_subdivide(V, F):
     return out, np.array(faces)
 
 
+def energy_beyond(V, F, reach):
+    """E over the vertices farther than `reach` from every border vertex."""
+    from region_sweep import border_vertices, mixed_areas
+    c = elastica.curvature(V, F)
+    H, K = np.asarray(c["H"]), np.asarray(c["K"])
+    B = V[border_vertices(F)]
+    far = np.ones(len(V), bool)
+    for s in range(0, len(V), 2000):
+        far[s:s + 2000] = np.min(np.linalg.norm(V[s:s + 2000, None, :] - B[None], axis=2), axis=1) > reach
+    return np.sum(((4 * H ** 2 - 2 * K) * mixed_areas(V, F))[far])
+
+
 def main():
-    if len(sys.argv) not in (2, 3):
+    argv = sys.argv[1:]
+    beyond = None
+    if "--beyond" in argv:
+        i = argv.index("--beyond")
+        beyond = float(argv[i + 1])
+        del argv[i:i + 2]
+    args = [a for a in argv if a != "--border"]
+    border = len(args) < len(argv)
+    if len(args) not in (1, 2):
         raise SystemExit(__doc__)
-    V, F = elastica.read(sys.argv[1])
+    V, F = elastica.read(args[0])
     V, F = np.asarray(V, float), np.asarray(F)
-    levels = int(sys.argv[2]) if len(sys.argv) == 3 else 2
+    levels = int(args[1]) if len(args) == 2 else 2
+    edge = np.mean(np.linalg.norm(V[F[:, 0]] - V[F[:, 1]], axis=1))
     for level in range(levels + 1):
         energy = elastica.curvature(V, F)["energy"]
-        print(f"level {level}: {len(V)} vertices, E {energy:.2f}")
+        line = f"level {level}: {len(V)} vertices, E {energy:.2f}"
+        if beyond is not None and border:
+            line += f", E beyond {beyond:g} edges of the border {energy_beyond(V, F, beyond * edge):.3f}"
+        print(line)
         if level < levels:
-            V, F = loop_subdivide(V, F)
+            V, F = loop_subdivide(V, F, border)
 
 
 if __name__ == "__main__":

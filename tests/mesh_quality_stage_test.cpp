@@ -4,6 +4,7 @@
 #include "flow/mesh_quality_stage.h"
 #include "flow/moving_region.h"
 #include "mesh/self_intersection.h"
+#include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
@@ -102,4 +103,56 @@ TEST(IsotropicEdgeMissesThinnest, OnlyWhereTheEdgeIsSeveralTimesThePartsThinnest
   EXPECT_FALSE(isotropicEdgeMissesThinnest(round));
   const MovingRegion thin(shapes::torus(1, 0.01, 40, 4), {}, BoundaryMode::Fixed);
   EXPECT_TRUE(isotropicEdgeMissesThinnest(thin));
+}
+
+// A mesh with a border, remeshed at four times its edge length (a coarse start): its fixed rows
+// (the border and its neighbours) keep their faces, which the grid interleaves with the moving ones
+// at the end of its face list; the remesher must still collapse (keeping those faces at their
+// index, without PatchRemeshingOptions::regionMayShrink, it collapsed nothing and came back with
+// every vertex). About a sixteenth of the moving vertices remain (within a factor 2), every fixed
+// vertex stays where it was (its index may change), and the coarse start counts one level (the grid's 11,200 moving vertices at its mean face: above
+// 4 × 2,500) and coarsens by 2 (all faces have one area).
+TEST(CoarseStart, ABorderedMeshRemeshesCoarseAroundItsFixedRows) {
+  const TriMesh grid = shapes::grid(110, 110);
+  MovingRegion region(grid, {}, BoundaryMode::Fixed);
+  const int moving = region.roles().freeCount;
+  const CoarseStart start = coarseStart(region);
+  EXPECT_EQ(start.levels, 1);
+  EXPECT_NEAR(start.coarsening, 2, 1e-9);
+  EXPECT_TRUE(start.onMovingFaces);
+  const std::vector<std::uint8_t> fixed = [&] {
+    std::vector<std::uint8_t> f(grid.vertexCount());
+    for (int v = 0; v < grid.vertexCount(); ++v) f[v] = !region.roles().free[v];
+    return f;
+  }();
+  ASSERT_TRUE(remeshMovingRegion(region, false, 4));
+  const int after = region.roles().freeCount;
+  EXPECT_LT(after, moving / 8);
+  EXPECT_GT(after, moving / 32);
+  EXPECT_TRUE(test::keepsPositions(grid, fixed, region.mesh()));
+  EXPECT_FALSE(selfIntersects(region.mesh()));
+}
+
+// The 20° rule on a whole mesh with a border counts the faces a remeshing can reshape: a 10×10
+// unit grid (two fixed rows around its border) with one moving vertex pushed 0.8 along x toward
+// its neighbour has thin moving faces (smallest angle measured 6.3° and 11.3°). Pushed next to the
+// fixed rows (vertex (2, 5)), those faces have a vertex beside a fixed one, whose edges the
+// remeshing keeps: no remeshing is asked for. Pushed inside (vertex (5, 5)), one is.
+// A selection (every face selected) counts every moving face, as before.
+TEST(NeedsRemeshing, AWholeMeshWithABorderIgnoresFacesBesideItsFixedRows) {
+  const auto pushed = [](int i, int j) {
+    TriMesh grid = shapes::grid(10, 10);
+    grid.positions[j * 11 + i].x() += 0.8;
+    return grid;
+  };
+  const MovingRegion besideFixed(pushed(2, 5), {}, BoundaryMode::Fixed);
+  ASSERT_LT(smallestMovingAngle(besideFixed), 20);
+  EXPECT_FALSE(needsRemeshing(besideFixed));
+  const MovingRegion inside(pushed(5, 5), {}, BoundaryMode::Fixed);
+  ASSERT_LT(smallestMovingAngle(inside), 20);
+  EXPECT_TRUE(needsRemeshing(inside));
+  const TriMesh selected = pushed(2, 5);
+  const MovingRegion selection(selected, std::vector<std::uint8_t>(selected.faces.size(), 1), BoundaryMode::Fixed);
+  ASSERT_LT(smallestMovingAngle(selection), 20);
+  EXPECT_TRUE(needsRemeshing(selection));
 }

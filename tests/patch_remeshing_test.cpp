@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -118,4 +120,91 @@ TEST(PatchRemeshing, RemovesTheSliversOfADeepBiharmonicPatch) {
   EXPECT_LT(angleBefore, 20);
   EXPECT_GT(angleAfter, 20);
   EXPECT_EQ(Topology(h.mesh.vertexCount(), h.mesh.faces).eulerCharacteristic(), 2);
+}
+
+namespace {
+
+// A 30×30 unit grid whose vertices two rows or more inside its border are movable, and the faces
+// of three movable vertices the region (the flow's moving region on a mesh with a border: the
+// faces of the fixed rows lie between the region's ones up to the end of the face list).
+struct BorderedGrid {
+  TriMesh mesh = shapes::grid(30, 30);
+  std::vector<std::uint8_t> movable, region;
+  BorderedGrid() {
+    for (int v = 0; v < mesh.vertexCount(); ++v) {
+      const int i = v % 31, j = v / 31;
+      movable.push_back(i >= 2 && j >= 2 && i <= 28 && j <= 28);
+    }
+    for (const Face& t : mesh.faces) region.push_back(movable[t[0]] && movable[t[1]] && movable[t[2]]);
+  }
+  // Remeshes the region toward edges `sigma` long, with or without PatchRemeshingOptions::regionMayShrink.
+  void remesh(double sigma, bool mayShrink) {
+    std::vector<double> lengths(mesh.positions.size(), sigma);
+    PatchRemeshingOptions opt;
+    opt.regionMayShrink = mayShrink;
+    remeshRegion(mesh, region, lengths, movable, opt);
+  }
+  // The positions of the vertices not movable, and the faces not in the region as their fixed
+  // corners' positions (a movable corner as NaN: it may move or be joined to another), in their order.
+  std::vector<Vec3> fixedPositions() const {
+    std::vector<Vec3> out;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+      if (!movable[v]) out.push_back(mesh.positions[v]);
+    return out;
+  }
+  std::vector<std::array<Vec3, 3>> outsideFaces() const {
+    std::vector<std::array<Vec3, 3>> out;
+    for (int f = 0; f < mesh.faceCount(); ++f) {
+      const Face& t = mesh.faces[f];
+      if (region[f]) continue;
+      std::array<Vec3, 3> corners;
+      for (int c = 0; c < 3; ++c) corners[c] = movable[t[c]] ? Vec3::Constant(std::nan("")) : mesh.positions[t[c]];
+      out.push_back(corners);
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+// A coarse remeshing (edges 3 long) of the bordered grid's region: kept at their indices, the
+// fixed rows' faces forbid nearly every collapse (more vertices than the 9× fewer the target
+// asks for stay: about as many as it had); allowed to shrink, the region keeps under a fifth of
+// its vertices, and every fixed vertex and every face outside comes back in its order, bit for bit
+// (each face's fixed corners at the same positions, its movable ones movable), with the grid's
+// boundary and Euler characteristic.
+// At the grid's own edge length (1: splits only, the region grows) both give the same mesh.
+TEST(PatchRemeshing, ARegionMayShrinkPastTheFacesAroundItKeepingTheirOrder) {
+  const BorderedGrid input;
+  const int movingBefore = static_cast<int>(std::count(input.movable.begin(), input.movable.end(), 1));
+  BorderedGrid kept = input, shrunk = input;
+  kept.remesh(3, false);
+  shrunk.remesh(3, true);
+  const auto movingOf = [](const BorderedGrid& g) {
+    return static_cast<int>(std::count(g.movable.begin(), g.movable.end(), 1));
+  };
+  EXPECT_GT(movingOf(kept), movingBefore / 2);
+  EXPECT_LT(movingOf(shrunk), movingBefore / 5);
+  const std::vector<Vec3> fixedBefore = input.fixedPositions(), fixedAfter = shrunk.fixedPositions();
+  ASSERT_EQ(fixedAfter.size(), fixedBefore.size());
+  for (std::size_t k = 0; k < fixedBefore.size(); ++k) EXPECT_TRUE(bitEqual(fixedAfter[k], fixedBefore[k])) << k;
+  const auto outsideBefore = input.outsideFaces(), outsideAfter = shrunk.outsideFaces();
+  ASSERT_EQ(outsideAfter.size(), outsideBefore.size());
+  for (std::size_t k = 0; k < outsideBefore.size(); ++k)
+    for (int c = 0; c < 3; ++c) EXPECT_TRUE(bitEqual(outsideAfter[k][c], outsideBefore[k][c])) << k;
+  EXPECT_EQ(shrunk.region.size(), shrunk.mesh.faces.size());
+  const Topology t0(input.mesh.vertexCount(), input.mesh.faces), t1(shrunk.mesh.vertexCount(), shrunk.mesh.faces);
+  EXPECT_EQ(t1.inconsistentEdgeCount(), 0);
+  EXPECT_EQ(t1.nonManifoldVertexCount(), 0);
+  EXPECT_EQ(t1.boundaryEdgeCount(), t0.boundaryEdgeCount());
+  EXPECT_EQ(t1.eulerCharacteristic(), t0.eulerCharacteristic());
+
+  BorderedGrid fine = input, fineShrinking = input;
+  fine.remesh(1, false);
+  fineShrinking.remesh(1, true);
+  EXPECT_EQ(fineShrinking.mesh.faces, fine.mesh.faces);
+  EXPECT_EQ(fineShrinking.region, fine.region);
+  ASSERT_EQ(fineShrinking.mesh.vertexCount(), fine.mesh.vertexCount());
+  for (int v = 0; v < fine.mesh.vertexCount(); ++v)
+    EXPECT_TRUE(bitEqual(fineShrinking.mesh.positions[v], fine.mesh.positions[v])) << v;
 }

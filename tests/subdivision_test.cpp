@@ -156,3 +156,69 @@ TEST(Subdivision, LoopRefusesAMeshWithABorder) {
   m.faces = {{0, 1, 2}};
   EXPECT_THROW(subdivideLoop(m), InvalidInputError);
 }
+
+// Loop's masks on the flagged faces only: the connectivity is subdivideMidpointRegion's; a vertex
+// all of whose faces are flagged and an edge vertex between two flagged faces take Loop's masks
+// (with every face flagged on a closed mesh: subdivideLoop's positions); every other vertex stays
+// where it was, every other edge vertex at its edge's midpoint.
+TEST(Subdivision, LoopOnARegionSmoothsInsideAndKeepsTheRest) {
+  const TriMesh input = test::jittered(shapes::torus(3, 1, 12, 6), 0.1, 9);
+  {
+    TriMesh all = input, loop = input;
+    std::vector<std::uint8_t> flags(all.faceCount(), 1);
+    subdivideLoopRegion(all, flags);
+    subdivideLoop(loop);
+    ASSERT_EQ(all.vertexCount(), loop.vertexCount());
+    std::vector<std::array<double, 3>> a, b;
+    for (int v = 0; v < all.vertexCount(); ++v) {
+      a.push_back({all.positions[v].x(), all.positions[v].y(), all.positions[v].z()});
+      b.push_back({loop.positions[v].x(), loop.positions[v].y(), loop.positions[v].z()});
+    }
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    EXPECT_EQ(a, b);
+  }
+  TriMesh m = input, midpoint = input;
+  std::vector<std::uint8_t> flags(m.faceCount()), midpointFlags;
+  for (int f = 0; f < m.faceCount(); ++f) flags[f] = m.positions[m.faces[f][0]].x() > 0.5;  // a band of the torus
+  midpointFlags = flags;
+  const std::vector<std::uint8_t> before = flags;
+  subdivideLoopRegion(m, flags);
+  subdivideMidpointRegion(midpoint, midpointFlags);
+  EXPECT_EQ(m.faces, midpoint.faces);
+  EXPECT_EQ(flags, midpointFlags);
+  // Which old vertices have every face flagged, and which edges two flagged faces.
+  const Topology t(input.vertexCount(), input.faces);
+  int smoothed = 0, kept = 0;
+  for (int v = 0; v < input.vertexCount(); ++v) {
+    bool inside = true;
+    for (int k = t.cornerBegin(v); k < t.cornerEnd(v); ++k) inside = inside && before[t.corner(k) / 3];
+    if (!inside) {
+      EXPECT_EQ(m.positions[v], input.positions[v]) << v;
+      ++kept;
+      continue;
+    }
+    const int n = t.valence(v);
+    const double beta = n == 3 ? 3.0 / 16 : 3.0 / (8.0 * n);
+    Vec3 ring = Vec3::Zero();
+    for (int k = t.ringBegin(v); k < t.ringEnd(v); ++k) ring += input.positions[t.ringVertex(k)];
+    EXPECT_LT((m.positions[v] - ((1 - n * beta) * input.positions[v] + beta * ring)).norm(), 1e-12) << v;
+    ++smoothed;
+  }
+  EXPECT_GT(smoothed, 0);
+  EXPECT_GT(kept, 0);
+  // New vertices: Loop's edge point where both faces were flagged, else the midpoint scheme's.
+  int edgePoints = 0, midpoints = 0;
+  for (int v = input.vertexCount(); v < m.vertexCount(); ++v) {
+    if (m.positions[v] == midpoint.positions[v]) ++midpoints;
+    else ++edgePoints;
+  }
+  EXPECT_GT(edgePoints, 0);
+  EXPECT_GT(midpoints, 0);
+  int interiorEdges = 0;
+  for (int e = 0; e < t.edgeCount(); ++e) {
+    const auto& oc = t.edgeOppositeCorners(e);
+    interiorEdges += oc[1] >= 0 && before[oc[0] / 3] && before[oc[1] / 3];
+  }
+  EXPECT_EQ(edgePoints, interiorEdges);
+}

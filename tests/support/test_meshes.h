@@ -4,6 +4,8 @@
 #include <elastica/hole_filling.h>
 #include <elastica/types.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -75,6 +77,20 @@ inline TriMesh ballJittered(TriMesh m, double radius, unsigned seed) {
     p += radius * d;
   }
   return m;
+}
+
+/// Whether every vertex of `before` flagged in `kept` is a vertex of `after`, bit for bit (a
+/// remeshing may renumber the vertices it does not move).
+inline bool keepsPositions(const TriMesh& before, const std::vector<std::uint8_t>& kept, const TriMesh& after) {
+  std::vector<std::array<double, 3>> points;
+  for (const Vec3& p : after.positions) points.push_back({p.x(), p.y(), p.z()});
+  std::sort(points.begin(), points.end());
+  for (std::size_t v = 0; v < before.positions.size(); ++v) {
+    const Vec3& p = before.positions[v];
+    if (kept[v] && !std::binary_search(points.begin(), points.end(), std::array<double, 3>{p.x(), p.y(), p.z()}))
+      return false;
+  }
+  return true;
 }
 
 /// `m` without the faces for which `cut(centroid)` is true and the vertices left without a face.

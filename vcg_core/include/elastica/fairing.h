@@ -20,8 +20,11 @@ namespace elastica {
 /// remeshing the faces stay as they are; with them, the mesh is rebuilt (new vertices and faces
 /// appended, flipped faces renumbered in place). Remeshing (FlowOptions::remesh, the semi-implicit
 /// scheme's default) rewrites only faces whose three vertices move: vertices that do not move keep
-/// their index (unless the region lost more vertices than it gained and one would fall past the
-/// end: then they keep their order) and faces touching one keep their index and value. The
+/// their position and their order, and their index unless the region lost more vertices than it
+/// gained and one would fall past the end; faces touching one keep those vertices (renumbered
+/// with them; a moving corner moves, or is joined to a neighbour) and their order, and their index
+/// unless the region lost more faces than it gained and too few remain to fill the slots before
+/// the last of them (a border, remeshed coarse). The
 /// semi-implicit scheme with remeshing never returns crossing faces when the input had none.
 /// FlowReport::energyInitial is the energy where the first flow starts (after any subdivision
 /// made before it).

@@ -24,6 +24,15 @@ void subdivideMidpoint(TriMesh& mesh, std::vector<std::uint8_t>* faceFlags = nul
 /// With every face flagged the result is subdivideMidpoint's, faces in another order.
 void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags);
 
+/// Loop subdivision of the flagged faces: their faces and vertices as subdivideMidpointRegion makes
+/// them (unflagged faces split only along edges they share with flagged ones), but a vertex all of
+/// whose faces are flagged (off the border) and an edge vertex whose two faces are flagged move to
+/// Loop's masks (as subdivideLoop's); every other vertex stays where it was, every other edge vertex
+/// at its midpoint. A smooth region refined inside a mesh stays smooth, and nothing outside the
+/// flagged faces' vertices moves. `faceFlags` is updated as subdivideMidpointRegion updates it.
+/// @throws InvalidInputError as Topology on a non-manifold mesh, or on a flag count other than the faces'.
+void subdivideLoopRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags);
+
 /// Loop subdivision of a closed mesh (Loop 1987, with Warren's weights β = 3/(8n), 3/16 at valence
 /// 3): the same 1-to-4 faces as subdivideMidpoint (old vertices keep their indices, edge vertices
 /// are appended), but every vertex moves to the scheme's smoothing mask, so a smooth coarse

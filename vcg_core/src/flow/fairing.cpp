@@ -676,12 +676,14 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   double bestEnergy = 0;
   // A fairing amount (FlowOptions::featureSize) keeps the user's vertices: an isotropic remeshing
   // first would resample the surface and smooth it below its edge length, whatever the amount.
-  // A large closed mesh starts coarse (coarseStartLevels): its levels are added to the schedule's.
-  // A coarse remeshing that would make faces cross is undone; the mesh is remeshed at its own size.
-  int coarseLevels =
-      quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStartLevels(region) : 0;
-  if (coarseLevels > 0 && !remeshMovingRegion(region, false, std::ldexp(1.0, coarseLevels)))
-    coarseLevels = 0;
+  // A large mesh starts coarse (coarseStart: a closed one, or one with a border whose moving part is
+  // large): its levels are added to the schedule's. A coarse remeshing that would make faces cross
+  // is undone; the mesh is remeshed at its own size.
+  const CoarseStart coarse =
+      quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStart(region) : CoarseStart{};
+  int coarseLevels = coarse.levels;
+  if (coarseLevels > 0 && !remeshMovingRegion(region, false, coarse.coarsening)) coarseLevels = 0;
+  int refinements = 0;  // subdivisions made after the first stage
   if (coarseLevels > 0) {
     ++report.remeshings;
     opt.subdivisionLevels += coarseLevels;
@@ -803,13 +805,17 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
       kept = KeptState{};
       // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
       // midpoints' facets would be creases for the finer level to flow out.
-      if (coarseLevels > 0)
+      // A mesh with a border refines only its moving faces: its fixed rows stay the user's.
+      if (coarseLevels > 0 && coarse.onMovingFaces && refinements < coarseLevels)
+        subdivideMovingFaces(region);
+      else if (coarseLevels > 0 && !coarse.onMovingFaces)
         region.edit([](TriMesh& mesh, std::vector<std::uint8_t>&) {
           subdivideLoop(mesh);
           return true;
         });
       else
         subdivideOneLevel(region);
+      ++refinements;
       continue;
     }
     --level;  // the same level again

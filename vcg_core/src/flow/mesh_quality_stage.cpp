@@ -36,6 +36,11 @@ bool stacksVertices(const TriMesh& mesh, const std::vector<std::uint8_t>& faces)
 // steps and 122 s at full size (E 25.1317 both, spread 0.001 %); the 44,460-vertex refined elephant
 // (genus 3) reached E 151.6 at a 120 s limit, against 181.9 at full size (docs/benchmarks.md).
 constexpr long long kCoarseStartVertices = 10000;
+// The floor for a whole mesh with a border, counted on its moving vertices (coarseStart): there
+// the border's fixed rows keep the input's triangles, and the moving ones are remeshed at the
+// input's mean face area. mannequin-devil (12,977 vertices) then starts at about 3,000 moving
+// vertices; the one measurement that sets it (docs/benchmarks.md, "Regions": the whole open scan).
+constexpr double kCoarseStartBorderedVertices = 2500;
 // workingResolutionFloor(): free vertices per handle, and without handles (see the header).
 constexpr int kFloorVerticesPerHandle = 1000, kFloorVertices = 100;
 
@@ -155,8 +160,9 @@ void fitTargets(const TriMesh& mesh, const std::vector<std::uint8_t>& region, st
 }
 
 // Gives the region a rewritten mesh whose faces flagged in `region` replaced the moving faces:
-// faces outside keep their slots (remeshRegion refills dead slots from the end only while no face
-// outside the region would move); the rewritten faces are selected.
+// faces outside keep their slots on a selection (remeshRegion refills dead slots from the end only
+// while no face outside the region would move; a whole mesh's faces may move down, keeping their
+// order, and it has no unselected face); the rewritten faces are selected.
 bool adopt(MovingRegion& moving, TriMesh&& rewritten, const std::vector<std::uint8_t>& region) {
   return moving.edit([&](TriMesh& out, std::vector<std::uint8_t>& selection) {
     if (!selection.empty()) {
@@ -186,6 +192,34 @@ void halveTargetsNearCrossings(const TriMesh& mesh, const TriMesh& remeshed, dou
       }
 }
 
+// The moving faces a remeshing can reshape. On a whole mesh with fixed vertices (a border's two
+// rows), not the ones at a vertex next to a fixed one: remeshRegion edits no edge of a face
+// outside the moving region, and the flow's tangential moves leave thin faces along the fixed rows
+// that no remeshing takes away (mannequin-devil's finest level: 14 faces under 20°, all there, and
+// two reflows for them that did not lower the energy; docs/benchmarks.md, "Regions"). A selection
+// keeps every moving face: its runs were measured so.
+std::vector<std::uint8_t> reshapableFaces(const MovingRegion& region) {
+  const TriMesh& mesh = region.mesh();
+  std::vector<std::uint8_t> faces = movingFaces(mesh, region.roles());
+  if (!region.selection().empty() || region.roles().freeCount == mesh.vertexCount()) return faces;
+  const Topology& topo = region.topology();
+  const std::vector<std::uint8_t>& free = region.roles().free;
+  std::vector<std::uint8_t> nextToFixed(mesh.positions.size(), 0);
+  for (int v = 0; v < topo.vertexCount(); ++v)
+    for (int r = topo.ringBegin(v); r < topo.ringEnd(v) && !nextToFixed[v]; ++r) nextToFixed[v] = !free[topo.ringVertex(r)];
+  for (int f = 0; f < mesh.faceCount(); ++f) {
+    const Face& t = mesh.faces[f];
+    if (nextToFixed[t[0]] || nextToFixed[t[1]] || nextToFixed[t[2]]) faces[f] = 0;
+  }
+  return faces;
+}
+
+// Whether a region is a selection: some face of its mesh is not selected.
+bool isSelection(const MovingRegion& region) {
+  const std::vector<std::uint8_t>& selection = region.selection();
+  return std::find(selection.begin(), selection.end(), 0) != selection.end();
+}
+
 }  // namespace
 
 int closedGenus(const Topology& topo) {
@@ -195,19 +229,43 @@ int closedGenus(const Topology& topo) {
   return std::max(0, (2 - (used - topo.edgeCount() + topo.faceCount())) / 2);
 }
 
-int coarseStartLevels(const MovingRegion& region) {
-  const std::vector<std::uint8_t>& selection = region.selection();
-  if (std::find(selection.begin(), selection.end(), 0) != selection.end()) return 0;
-  if (region.topology().boundaryEdgeCount() > 0) return 0;
-  // The vertices the isotropic remeshing would give at its own size (remeshMovingRegion: faces
-  // of the median area, two faces a vertex), not the input's: a scan of big and small triangles
-  // has many more (the bull, midpoint-subdivided twice to 99,000 vertices: about 250,000).
+CoarseStart coarseStart(const MovingRegion& region) {
+  CoarseStart start;
+  // A selection starts where it is: its coarse remeshing met the scan's other parts (a 50,000-face
+  // region of a leg crossed the foot beside it, and its steps were refused; docs/benchmarks.md).
+  if (isSelection(region)) return start;
+  start.onMovingFaces = region.topology().boundaryEdgeCount() > 0;
+  // A whole closed mesh counts the vertices the isotropic remeshing would give at its own size
+  // (remeshMovingRegion: faces of the median area, two faces a vertex), not the input's: a scan of
+  // big and small triangles has many more (the bull, midpoint-subdivided twice to 99,000 vertices:
+  // about 250,000). A mesh with a border counts its moving faces, the ones its remeshing rewrites,
+  // at their mean area: its finest level then has about the vertices it came with, where the
+  // median's size tripled a scan of mixed triangles (mannequin-devil: 12,977 to 43,784).
   double total = 0;
-  const double median = medianFaceArea(region.mesh(), {}, &total);
-  if (!(median > 0) || !std::isfinite(total)) return 0;
-  int levels = 0;
-  for (double n = 0.5 * total / median; n >= 4.0 * kCoarseStartVertices; n /= 4) ++levels;
-  return levels;
+  const double median = start.onMovingFaces
+                            ? medianFaceArea(region.mesh(), movingFaces(region.mesh(), region.roles()), &total)
+                            : medianFaceArea(region.mesh(), {}, &total);
+  if (!(median > 0) || !std::isfinite(total)) return start;
+  double count = 0;
+  if (start.onMovingFaces)
+    for (std::uint8_t m : movingFaces(region.mesh(), region.roles())) count += m;
+  const double area = start.onMovingFaces ? total / count : median;
+  const double floor = start.onMovingFaces ? kCoarseStartBorderedVertices : kCoarseStartVertices;
+  for (double n = 0.5 * total / area; n >= 4.0 * floor; n /= 4) ++start.levels;
+  start.coarsening = std::ldexp(std::sqrt(area / median), start.levels);
+  return start;
+}
+
+int coarseStartLevels(const MovingRegion& region) { return coarseStart(region).levels; }
+
+void subdivideMovingFaces(MovingRegion& region) {
+  std::vector<std::uint8_t> moving = movingFaces(region.mesh(), region.roles());
+  region.edit([&](TriMesh& mesh, std::vector<std::uint8_t>& selection) {
+    subdivideLoopRegion(mesh, moving);
+    // Every face split has a moving vertex, so it was selected, and so are its appended children.
+    if (!selection.empty()) selection.resize(mesh.faces.size(), 1);
+    return true;
+  });
 }
 
 int workingResolutionFloor(const MovingRegion& region) {
@@ -236,7 +294,8 @@ int subdivideToWorkingResolution(MovingRegion& region, const FlowOptions& opt) {
 }
 
 bool needsRemeshing(const MovingRegion& region) {
-  return smallestMovingAngle(region) < kRemeshAngleDegrees || largestMovingCurvatureTimesEdge(region) > kRemeshCurvatureTimesEdge;
+  const double smallest = smallestAngleDegrees(region.mesh(), reshapableFaces(region));
+  return smallest < kRemeshAngleDegrees || largestMovingCurvatureTimesEdge(region) > kRemeshCurvatureTimesEdge;
 }
 
 double smallestMovingAngle(const MovingRegion& region) {
@@ -333,9 +392,9 @@ long long vertexBudget(long long moving, int genus) {
 
 bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving,
                         const std::vector<std::uint8_t>* refineAt, int crossingRefinements) {
-  const TriMesh& mesh = moving.mesh();
   const Topology& topo = moving.topology();
   const VertexRoles& roles = moving.roles();
+  const TriMesh& mesh = moving.mesh();
   std::vector<std::uint8_t> region = movingFaces(mesh, roles);
   const double target = coarsening * equilateralEdge(mesh, region);
   if (!(target > 0) || hasFarVertex(mesh, region, target)) return false;
@@ -372,6 +431,13 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   PatchRemeshingOptions options;
   // Curvature-adaptive edges and a cage's long slivers need more vertices, but not without end.
   options.maxVertices = kMaxGrowth * mesh.vertexCount() + 1000;
+  // A whole mesh with a border: the faces of its fixed rows (the border and its neighbours) lie
+  // between the moving ones to the end of the face list, and a remeshing that must keep them at
+  // their index collapsed nearly nothing (a coarse start came back with every vertex it had): they
+  // keep their order instead (fair()'s contract). A selection keeps its faces' indices, and with
+  // them remeshings that collapse little (its band of fixed faces lies between its moving ones
+  // too): its runs were measured so, and it has no coarse start (docs/benchmarks.md, "Regions").
+  options.regionMayShrink = moving.selection().empty();
   // Within `maxMoving`: the targets are fitted to it (fitTargets), and fitted again to a smaller
   // count in proportion where the remeshing left more than it predicted; a remeshing that still
   // leaves more is not made.

@@ -44,8 +44,10 @@ void subdivideOneLevel(MovingRegion& region);
 /// Returns the number of subdivisions made: the levels the schedule has used up.
 int subdivideToWorkingResolution(MovingRegion& region, const FlowOptions& opt);
 
-/// A flowed mesh the discrete operators no longer serve: an angle below 20° among the moving
-/// faces, or a moving vertex with κℓ > 0.6 (largestMovingCurvatureTimesEdge).
+/// A flowed mesh the discrete operators no longer serve and a remeshing can mend: an angle below
+/// 20° among the moving faces (on a whole mesh with fixed vertices, those without a vertex next to
+/// a fixed one: the remeshing keeps the edges along the fixed rows), or a moving vertex with
+/// κℓ > 0.6 (largestMovingCurvatureTimesEdge).
 bool needsRemeshing(const MovingRegion& region);
 
 /// Smallest corner angle, in degrees, of the faces whose three vertices all move (180 if none).
@@ -126,11 +128,29 @@ bool isotropicEdgeMissesThinnest(const MovingRegion& region);
 /// multiplies it by 4 (a 1-to-4 subdivision).
 long long vertexBudget(long long moving, int genus);
 
-/// Levels k of a coarse start for the whole-mesh fair of a large closed mesh: remeshed at 2^k times
-/// its edge length (a 4^k-th of its vertices, no fewer than kCoarseStartVertices) and flowed there,
-/// then subdivided k times back to its resolution, so that the many steps a shape change takes run
-/// on the small mesh and the full-size one flows only the last few. 0 for a mesh with a border, a
-/// selection, or fewer than 4 × kCoarseStartVertices vertices.
+/// Levels k of a coarse start: the moving faces remeshed at 2^k times their edge length (a 4^k-th
+/// of their vertices) and flowed there, then subdivided k times back to their resolution
+/// (subdivideLoop on a closed mesh, subdivideMovingFaces on a mesh with a border), so that the many
+/// steps a shape change takes run on the small mesh and the full-size one flows only the last few.
+/// A closed mesh keeps kCoarseStartVertices or more at the coarse level (0 below 4 × that many), a
+/// mesh with a border kCoarseStartBorderedVertices moving ones. 0 for a selection.
 int coarseStartLevels(const MovingRegion& region);
+
+/// coarseStartLevels() with what the run needs to make it: the levels, the remeshing's target as a
+/// multiple of isotropicTargetEdge() (2^k on a closed mesh; on a mesh with a border, 2^k times the
+/// edge of the moving faces' mean area over their median's), and whether the refinement subdivides
+/// the moving faces only (subdivideMovingFaces: a border) or the whole mesh (subdivideLoop).
+struct CoarseStart {
+  int levels = 0;
+  double coarsening = 1;
+  bool onMovingFaces = false;
+};
+CoarseStart coarseStart(const MovingRegion& region);
+
+/// One level of a coarse start's refinement on a mesh with a border (or a selection): the faces whose
+/// three vertices move, Loop-subdivided (subdivideLoopRegion); the faces around them that share an
+/// edge with one are split to stay conforming, and no fixed vertex and no other face changes. The
+/// selection (if any) follows: every split face was selected, and its children are.
+void subdivideMovingFaces(MovingRegion& region);
 
 }  // namespace elastica

@@ -29,7 +29,7 @@ bool turnsLittle(const Vec3& before, const Vec3& after) {
 class PatchEditor {
  public:
   PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
-              std::vector<std::uint8_t>& movable, double lengthScale)
+              std::vector<std::uint8_t>& movable, double lengthScale, bool mayShrink)
       : m_(mesh), patch_(patchFace), sigma_(sigma), movable_(movable), scale_(lengthScale), faceAlive_(mesh.faces.size(), 1),
         vertexFaces_(faceListsOf(mesh)) {
     sigma_.resize(m_.positions.size(), 0);
@@ -37,9 +37,10 @@ class PatchEditor {
     int patchSoFar = 0;
     for (int f = 0; f < m_.faceCount(); ++f) {
       if (patch_[f]) ++patchSoFar;
-      else minPatchFaces_ = patchSoFar;
+      else slotsBeforeOutside_ = patchSoFar;
     }
     livePatchFaces_ = patchSoFar;
+    minPatchFaces_ = mayShrink ? 0 : slotsBeforeOutside_;
   }
 
   // The edges of the live patch faces, each once as (smaller, larger), in increasing order: vertex
@@ -229,10 +230,28 @@ class PatchEditor {
     m_.positions.swap(next_);
   }
 
-  // Drops dead faces (filling their slots with faces from the end, so every slot below the
-  // original face count stays filled: collapses never leave fewer patch faces than the patch had
-  // slots) and dead vertices (later vertices move down).
+  // Drops dead faces and dead vertices (compactFaces(), then the vertices' rule below).
   void compact() {
+    compactFaces();
+    compactVertices();
+  }
+
+ private:
+  // Drops dead faces: while the patch has live faces for its slots before the last face outside
+  // it, by filling the dead slots with faces from the end (no face outside moves); otherwise (only
+  // with regionMayShrink) every live face moves down, keeping its order.
+  void compactFaces() {
+    if (livePatchFaces_ < slotsBeforeOutside_) {
+      int next = 0;
+      for (int f = 0; f < m_.faceCount(); ++f) {
+        if (!faceAlive_[f]) continue;
+        m_.faces[next] = m_.faces[f];
+        patch_[next++] = patch_[f];
+      }
+      m_.faces.resize(next);
+      patch_.resize(next);
+      return;
+    }
     int last = m_.faceCount() - 1;
     for (int s = 0; s < m_.faceCount(); ++s) {
       if (faceAlive_[s]) continue;
@@ -246,6 +265,9 @@ class PatchEditor {
     const int liveFaces = static_cast<int>(std::count(faceAlive_.begin(), faceAlive_.end(), 1));
     m_.faces.resize(liveFaces);
     patch_.resize(liveFaces);
+  }
+
+  void compactVertices() {
     // Fixed vertices keep their indices; the live movable ones fill the other slots in their
     // order (with every movable vertex after every fixed one, as in a hole's patch, that is
     // moving later vertices down). If too many movable vertices died for that (a fixed vertex
@@ -287,7 +309,6 @@ class PatchEditor {
       for (int& v : t) v = index[v];
   }
 
- private:
   void addFace(const Face& t) {
     const int f = m_.faceCount();
     m_.faces.push_back(t);
@@ -352,8 +373,9 @@ class PatchEditor {
   std::vector<int> ringOffset_, ringVertex_;  // relaxPasses()' neighbour lists (CSR)
   std::vector<Vec3> faceNormal_;              // relax()'s face normals at the pass's start
   // compact() refills dead slots from the end of the face list: while the patch keeps at least as
-  // many faces as it has slots before the last face outside it, no face outside it moves.
-  int minPatchFaces_ = 0, livePatchFaces_ = 0;
+  // many faces as it has slots before the last face outside it, no face outside it moves. Collapses
+  // keep it so (minPatchFaces_) unless the region may shrink.
+  int slotsBeforeOutside_ = 0, minPatchFaces_ = 0, livePatchFaces_ = 0;
 };
 
 }  // namespace
@@ -367,7 +389,7 @@ void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vecto
 
 bool remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt) {
-  PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale);
+  PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale, opt.regionMayShrink);
   bool withinLimit = true;
   for (int round = 0; round < opt.iterations; ++round) {
     // A split pass changes no length and no edge's faces' flags: the next pass can only split

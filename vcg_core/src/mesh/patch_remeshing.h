@@ -27,6 +27,13 @@ struct PatchRemeshingOptions {
   /// Target edge lengths are this times `sigma` (a coarse pass over a patch whose sigma holds the
   /// border's density: restoration's coarse-to-fine fill). Sigmas of new vertices stay unscaled.
   double lengthScale = 1;
+  /// Whether the region may end with fewer faces than it has slots before the last face outside it
+  /// (remeshRegion). Off, collapses stop short of that and every face outside keeps its index; on,
+  /// they do not, and the faces outside then keep their value and their order but move down (a
+  /// mesh with a border, remeshed whole: its fixed rows' faces lie between the moving ones to the
+  /// end of the face list, and nearly every collapse would be refused). Where the region still
+  /// fills its slots the result is the same either way.
+  bool regionMayShrink = false;
 };
 
 /// Remeshes the faces flagged in `patchFace` (one byte per face) toward the edge length `sigma`
@@ -53,9 +60,15 @@ void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vecto
 /// The general form, for any region of a mesh (the flow's moving region): vertices flagged in
 /// `movable` (one byte per vertex; remeshPatch's "new" vertices) may move, be collapsed and be
 /// removed, the others never; new vertices are movable. `movable` and `sigma` follow the
-/// vertices. Every movable vertex must have a closed fan of region faces (a region's vertices
-/// two rings inside its border have). False if `opt.maxVertices` stopped a split pass (the
-/// region is remeshed all the same, with edges left longer than their targets).
+/// vertices. Every movable vertex should have a closed fan of region faces (a region's vertices
+/// two rings inside its border have); the flow's moving region also hands over movable vertices
+/// beside its fixed ones, whose faces outside the region then follow them (moved, or joined to a
+/// neighbour by a collapse). Vertices not movable keep their index while the movable ones that
+/// remain fill the slots before the last of them, and their order otherwise; faces not flagged keep
+/// their corners that are not movable, and their index while the region fills its slots before the
+/// last of them (always, unless PatchRemeshingOptions::regionMayShrink), and their order otherwise.
+/// False if `opt.maxVertices` stopped a split pass (the region is remeshed all the same, with edges
+/// left longer than their targets).
 bool remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt = {});
 

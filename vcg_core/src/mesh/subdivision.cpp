@@ -25,6 +25,11 @@ class Midpoints {
     return it->second;
   }
   void reserve(size_t n) { index_.reserve(n); }
+  // The midpoint vertex of edge a-b, or -1 if it was not made.
+  int find(int a, int b) const {
+    const auto it = index_.find(edgeKey(a, b));
+    return it == index_.end() ? -1 : it->second;
+  }
 
  private:
   TriMesh& mesh_;
@@ -53,17 +58,15 @@ void subdivideMidpoint(TriMesh& mesh, std::vector<std::uint8_t>* faceFlags) {
   if (faceFlags) *faceFlags = std::move(flags);
 }
 
-void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags) {
-  if (faceFlags.size() != mesh.faces.size())
-    throw InvalidInputError("subdivideMidpointRegion: " + std::to_string(faceFlags.size()) + " flags for " +
-                            std::to_string(mesh.faces.size()) + " faces");
+namespace {
+
+// subdivideMidpointRegion's splits, the midpoints made in `mid`.
+void splitRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags, Midpoints& mid) {
   // The edges to split: every edge of a flagged face.
   std::unordered_set<std::uint64_t> split;
   for (size_t f = 0; f < mesh.faces.size(); ++f)
     if (faceFlags[f])
       for (int k = 0; k < 3; ++k) split.insert(edgeKey(mesh.faces[f][k], mesh.faces[f][(k + 1) % 3]));
-
-  Midpoints mid(mesh);
   mid.reserve(split.size());
   const size_t faceCount = mesh.faces.size();
   auto emit = [&](size_t parent, bool first, const Face& child) {
@@ -107,6 +110,62 @@ void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags
   }
 }
 
+// Loop's vertex mask (Warren's β = 3/(8n), 3/16 at valence 3) at vertex v of `topo`, from positions p.
+Vec3 loopVertex(const Topology& topo, const std::vector<Vec3>& p, int v) {
+  const int n = topo.valence(v);
+  if (n == 0) return p[v];
+  const double beta = n == 3 ? 3.0 / 16 : 3.0 / (8.0 * n);
+  Vec3 ring = Vec3::Zero();
+  for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ring += p[topo.ringVertex(k)];
+  return (1 - n * beta) * p[v] + beta * ring;
+}
+
+// Loop's edge mask on interior edge e: 3/8 of its ends, 1/8 of the opposite corners.
+Vec3 loopEdge(const Topology& topo, const std::vector<Vec3>& p, int e) {
+  const auto& ev = topo.edgeVertices(e);
+  const auto& oc = topo.edgeOppositeCorners(e);
+  const std::vector<Face>& faces = topo.faces();
+  const int c = faces[oc[0] / 3][oc[0] % 3], d = faces[oc[1] / 3][oc[1] % 3];
+  return 0.375 * (p[ev[0]] + p[ev[1]]) + 0.125 * (p[c] + p[d]);
+}
+
+void requireFlags(const char* what, const TriMesh& mesh, const std::vector<std::uint8_t>& faceFlags) {
+  if (faceFlags.size() != mesh.faces.size())
+    throw InvalidInputError(std::string(what) + ": " + std::to_string(faceFlags.size()) + " flags for " +
+                            std::to_string(mesh.faces.size()) + " faces");
+}
+
+}  // namespace
+
+void subdivideMidpointRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags) {
+  requireFlags("subdivideMidpointRegion", mesh, faceFlags);
+  Midpoints mid(mesh);
+  splitRegion(mesh, faceFlags, mid);
+}
+
+void subdivideLoopRegion(TriMesh& mesh, std::vector<std::uint8_t>& faceFlags) {
+  requireFlags("subdivideLoopRegion", mesh, faceFlags);
+  const int nv = mesh.vertexCount();
+  const Topology topo(nv, mesh.faces);
+  const std::vector<Vec3> p = mesh.positions;
+  const std::vector<std::uint8_t> flagged = faceFlags;
+  Midpoints mid(mesh);
+  splitRegion(mesh, faceFlags, mid);
+  // Loop's masks where their whole stencil lies in flagged faces: a vertex all of whose faces are
+  // flagged (off the border), an edge whose two faces are.
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    const auto& oc = topo.edgeOppositeCorners(e);
+    if (oc[1] < 0 || !flagged[oc[0] / 3] || !flagged[oc[1] / 3]) continue;
+    const auto& ev = topo.edgeVertices(e);
+    mesh.positions[mid.find(ev[0], ev[1])] = loopEdge(topo, p, e);
+  }
+  for (int v = 0; v < nv; ++v) {
+    bool inside = !topo.isBoundaryVertex(v) && !topo.isIsolatedVertex(v);
+    for (int k = topo.cornerBegin(v); inside && k < topo.cornerEnd(v); ++k) inside = flagged[topo.corner(k) / 3] != 0;
+    if (inside) mesh.positions[v] = loopVertex(topo, p, v);
+  }
+}
+
 void subdivideLoop(TriMesh& mesh) {
   const int nv = mesh.vertexCount();
   const Topology topo(nv, mesh.faces);
@@ -115,24 +174,9 @@ void subdivideLoop(TriMesh& mesh) {
                             " border edges (Loop's masks here are for closed meshes)");
   const std::vector<Vec3>& p = mesh.positions;
   std::vector<Vec3> next(static_cast<std::size_t>(nv) + topo.edgeCount());
-  for (int v = 0; v < nv; ++v) {
-    const int n = topo.valence(v);
-    if (n == 0) {
-      next[v] = p[v];
-      continue;
-    }
-    const double beta = n == 3 ? 3.0 / 16 : 3.0 / (8.0 * n);
-    Vec3 ring = Vec3::Zero();
-    for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k) ring += p[topo.ringVertex(k)];
-    next[v] = (1 - n * beta) * p[v] + beta * ring;
-  }
+  for (int v = 0; v < nv; ++v) next[v] = loopVertex(topo, p, v);
   const std::vector<Face>& faces = topo.faces();
-  for (int e = 0; e < topo.edgeCount(); ++e) {
-    const auto& ev = topo.edgeVertices(e);
-    const auto& oc = topo.edgeOppositeCorners(e);
-    const int c = faces[oc[0] / 3][oc[0] % 3], d = faces[oc[1] / 3][oc[1] % 3];
-    next[nv + e] = 0.375 * (p[ev[0]] + p[ev[1]]) + 0.125 * (p[c] + p[d]);
-  }
+  for (int e = 0; e < topo.edgeCount(); ++e) next[nv + e] = loopEdge(topo, p, e);
   // The edge between a and b: from a's ring.
   auto edgeVertex = [&](int a, int b) {
     for (int k = topo.ringBegin(a); k < topo.ringEnd(a); ++k)
