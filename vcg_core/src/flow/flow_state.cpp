@@ -90,7 +90,7 @@ void FlowState::evaluateGeometry() {
   if (geometryEvaluated_) return;
   // The per-vertex quantities (areas, normals, angle sums) at the active vertices only: every
   // integrator and the energy read them there (a free vertex and its ring), and a region's piece is
-  // mostly fixed rings and obstacles, whose angle sums were a tenth of a region's run
+  // mostly fixed rings and obstacles, whose angle sums alone were 8 % of a region's run
   // (docs/benchmarks.md, "Regions: the attempt's cost").
   computeGeometry(topology(), region_.positions(), opt_.area, geo_, &roles().active);
   struct Tally {
