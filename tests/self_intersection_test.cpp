@@ -74,6 +74,50 @@ TEST(SelfIntersection, LocalTestLooksOnlyAtFlaggedFaces) {
   EXPECT_TRUE(selfIntersects(m, &second));
 }
 
+// After edge flips (the same positions, some faces rewritten) only pairs with a rewritten face are
+// tested: a rewritten face that crosses is found, a crossing the flags say was tested before is not
+// looked at again, and where the positions moved every flagged pair is tested.
+TEST(SelfIntersection, RewrittenFacesAreTestedAlone) {
+  const std::vector<std::uint8_t> active{1, 1, 1};
+  // The fin pierces the triangle (as if the guard had passed it), and a third face beside the fin
+  // is rewritten with its corners turned: only its own pairs are tested, and it crosses nothing.
+  TriMesh crossing = twoTriangles(0);
+  crossing.positions.push_back(Vec3(9, 8, 9));
+  crossing.positions.push_back(Vec3(9, 0, 9));
+  crossing.faces.push_back({4, 6, 7});
+  TriMesh flipped = crossing;
+  flipped.faces[2] = {4, 7, 6};
+  EXPECT_TRUE(selfIntersects(flipped, &active));
+  EXPECT_FALSE(rewrittenFacesCross(crossing, flipped, active)) << "only the rewritten face's pairs";
+  TriMesh moved = flipped;
+  moved.positions[7] += Vec3(0, 0, 1e-3);
+  EXPECT_TRUE(rewrittenFacesCross(crossing, moved, active)) << "the positions moved: every flagged pair";
+  // A rewritten face that runs from below the triangle up to the fin, through the triangle.
+  TriMesh clear = twoTriangles(5);
+  clear.positions.push_back(Vec3(0.5, 0.5, -1));
+  clear.faces.push_back({3, 4, 5});
+  TriMesh through = clear;
+  through.faces[2] = {6, 4, 5};
+  EXPECT_FALSE(selfIntersects(clear));
+  EXPECT_TRUE(rewrittenFacesCross(clear, through, active));
+}
+
+// A grid of many cells per face (two small clusters far apart) is keyed and sorted, one of few
+// cells is bucketed: both find vcglib's faces.
+TEST(SelfIntersection, SparseAndDenseGridsAgreeWithVcglib) {
+  for (const double apart : {0.0, 1e4}) {
+    TriMesh m = shapes::icosphere(1.0, 2);
+    m.positions[0] = -1.4 * m.positions[0];
+    const TriMesh far = shapes::icosphere(1.0, 2);
+    const int offset = m.vertexCount();
+    for (const Vec3& p : far.positions) m.positions.push_back(p + Vec3(apart + 3, 0, 0));
+    for (const Face& f : far.faces) m.faces.push_back({f[0] + offset, f[1] + offset, f[2] + offset});
+    const std::vector<int> ours = selfIntersectingFaces(m);
+    EXPECT_GT(ours.size(), 0u);
+    EXPECT_EQ(ours, vcglibSelfIntersections(m)) << "clusters " << apart << " apart";
+  }
+}
+
 // Long thin faces among small ones (a CAD rod's sides) go through the every-face path.
 TEST(SelfIntersection, VeryLargeFacesAreTestedToo) {
   TriMesh m = shapes::icosphere(0.01, 3);

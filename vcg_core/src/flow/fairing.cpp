@@ -297,6 +297,19 @@ double largestCurvatureTimesEdge(FlowState& state) {
   return largestCurvatureTimesEdge(state.topology(), state.mesh().positions, c.H, c.K, state.roles().free);
 }
 
+// Whether a step's edge flips (FlowState::maintain) made faces cross. The step's guard has just
+// tested every pair with an active face at these positions; flips rewrite faces among free vertices
+// only (all of them active) and change no vertex's role, so only a pair with a flipped face can
+// cross, and those alone are tested (rewrittenFacesCross): the whole region's test after every
+// step with a flip was a third of the crossing tests' time on lion-head's 1,000-face region
+// (docs/benchmarks.md, "Regions: the attempt's cost"). A sliding border moved after the guard
+// (BoundarySlider), so there every pair with an active face is tested again, as before.
+bool flipsMadeFacesCross(const TriMesh& beforeFlips, FlowState& state) {
+  const std::vector<std::uint8_t>& active = state.roles().activeFace;
+  if (state.roles().slidingCount > 0) return selfIntersects(state.mesh(), &active);
+  return rewrittenFacesCross(beforeFlips, state.mesh(), active);
+}
+
 // The vector scheme (flow/vector_integrator.h) with adaptive τ (×2 after a step, ×0.5 after a
 // refusal, below the last refused size). "Converged" is a statement about the shape at the flow's
 // own time scale, the relaxation time T = A²/kShapeScaleFactor of the moving region's slowest
@@ -402,7 +415,7 @@ StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeT
     const long long version = state.connectivityVersion();
     if (guardEmbedding) beforeFlips = state.mesh();
     state.maintain(area0);
-    if (guardEmbedding && state.connectivityVersion() != version && selfIntersects(state.mesh(), &state.roles().activeFace)) {
+    if (guardEmbedding && state.connectivityVersion() != version && flipsMadeFacesCross(beforeFlips, state)) {
       FlowOptions noFlips = state.options();  // for the rest of the stage (flips that cross come back)
       noFlips.flipEdges = false;
       state = FlowState(beforeFlips, state.selection(), noFlips, state.internalOptions(), state.slider());
@@ -610,6 +623,29 @@ bool remeshTessellation(MovingRegion& region) {
   return false;
 }
 
+// The start of the last stage that flowed (the region and the level) and how it ended: the
+// schedule's verdict, its stop reason and whether it was to refine later.
+struct LastStage {
+  TriMesh mesh;
+  std::vector<std::uint8_t> selection;
+  int level = -1;
+  StageVerdict verdict;
+  bool refineLater = false;
+  StopReason stop = StopReason::Converged;
+};
+// Whether a reflow whose remeshing was refused would flow the last stage again: the region is
+// where that stage started, at the same level (the stage ended where it started, and the remeshing
+// left it so). The vector scheme's stage is a function of its start but for its first step τ,
+// carried from the last stage's last; from a stage that ended at its start that step is far beyond
+// the region's shape time T, where the step no longer depends on τ. It is not run again: the
+// schedule judges the last stage's verdict once more. On lion-head's 1,000-face region the third
+// stage repeated the second's 41 attempts, every energy the same to the last digit
+// (docs/benchmarks.md, "Regions: the attempt's cost").
+bool repeatsLastStage(const LastStage& last, const MovingRegion& region, int level) {
+  return last.level == level && last.selection == region.selection() && last.mesh.faces == region.mesh().faces &&
+         last.mesh.positions == region.mesh().positions;
+}
+
 // fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
 FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal,
                       const StageEnded& stageEnded) {
@@ -733,56 +769,77 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     const long long fixed = region.mesh().vertexCount() - region.roles().freeCount;
     report.vertexBudget = fixed + movingBudget * (1LL << (2 * std::max(0, opt.subdivisionLevels - level)));
   }
+  LastStage last;
   for (;; ++level) {
-    if (remeshAdaptively &&
-        remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0))
-      ++report.remeshings;
+    bool remeshingRefused = false;
+    if (remeshAdaptively) {
+      if (remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0))
+        ++report.remeshings;
+      else
+        remeshingRefused = true;
+    }
     remeshAdaptively = false;
-    FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
-    requireMovingVertex(state);
-    const bool refineLater = level < opt.subdivisionLevels &&
-                             (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
-    const double stageStart = run.elapsed();
-    if (first) {
-      recordStart(report, state);
-      first = false;
-    }
-    FlowStage stage = beginStage(state, level);
-    const bool firstStage = report.stages.empty();
-    StageEnd end = StageEnd::Settled;
-    try {
-      if (opt.scheme == Scheme::Explicit) {
-        end = explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
-      } else if (opt.scheme == Scheme::Vector) {
-        end = vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
-                          quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && schedule.reflows() == 0,
-                          firstStage, genus > 0, quality, lastTau, best, bestEnergy);
-        // The stage's output is its lowest-energy state (before any neck formed).
-        if (end == StageEnd::NeckFormed || bestEnergy < state.energy())
-          state = FlowState(best, state.selection(), stageOpt, internal, slider.get());
-      } else {
-        const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
-        end = semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance,
-                                plateau, quality && !report.inputSelfIntersects, lastTau);
+    StageVerdict verdict;
+    bool firstStage = false, refineLater = false;
+    double previousEnergy = 0;
+    if (remeshingRefused && opt.scheme == Scheme::Vector && repeatsLastStage(last, region, level)) {
+      verdict = last.verdict;
+      refineLater = last.refineLater;
+      report.stop = last.stop;
+      previousEnergy = last.verdict.energy;
+    } else {
+      last = {region.mesh(), region.selection(), level};
+      FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
+      requireMovingVertex(state);
+      refineLater = level < opt.subdivisionLevels &&
+                    (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
+      const double stageStart = run.elapsed();
+      if (first) {
+        recordStart(report, state);
+        first = false;
       }
-    } catch (const FlowDivergedError&) {
-      region = state.releaseRegion();  // the restored checkpoint (faces may have been flipped)
-      throw;
+      FlowStage stage = beginStage(state, level);
+      firstStage = report.stages.empty();
+      StageEnd end = StageEnd::Settled;
+      try {
+        if (opt.scheme == Scheme::Explicit) {
+          end = explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
+        } else if (opt.scheme == Scheme::Vector) {
+          end = vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
+                            quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && schedule.reflows() == 0,
+                            firstStage, genus > 0, quality, lastTau, best, bestEnergy);
+          // The stage's output is its lowest-energy state (before any neck formed).
+          if (end == StageEnd::NeckFormed || bestEnergy < state.energy())
+            state = FlowState(best, state.selection(), stageOpt, internal, slider.get());
+        } else {
+          const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
+          end = semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance,
+                                  plateau, quality && !report.inputSelfIntersects, lastTau);
+        }
+      } catch (const FlowDivergedError&) {
+        region = state.releaseRegion();  // the restored checkpoint (faces may have been flipped)
+        throw;
+      }
+      endStage(state, stage, stageStart, run, region);
+      verdict = {end, stage.steps, stage.energy};
+      last.verdict = verdict;
+      last.refineLater = refineLater;
+      last.stop = report.stop;
+      if (report.stages.size() >= 2) previousEnergy = report.stages.end()[-2].energy;
     }
-    endStage(state, stage, stageStart, run, region);
     Resolution resolution;
     const bool measured = measureEach && measureResolution(region.mesh(), opt, resolution);
-    if ((measured && resolution.resolved()) || keepEachStage) keepIfBest(kept, region, stage.energy, level);
+    if ((measured && resolution.resolved()) || keepEachStage) keepIfBest(kept, region, verdict.energy, level);
     ScheduleContext context;
     context.scheme = opt.scheme;
     context.automatic = requested.scheme == Scheme::Automatic;
     context.quality = quality;
     context.firstStage = firstStage;
     context.refineLater = refineLater;
-    if (report.stages.size() >= 2) context.previousEnergy = report.stages.end()[-2].energy;
+    context.previousEnergy = previousEnergy;
     context.stopped = [&] { return run.stopped || run.limitReached(); };
     context.needsRemeshing = [&] { return needsRemeshing(region); };
-    NextStage next = schedule.next({end, stage.steps, stage.energy}, context, report.stop);
+    NextStage next = schedule.next(verdict, context, report.stop);
     // A run never says converged on a state its mesh does not resolve: refined where the gap is,
     // it flows on (kMaxUnresolvedRefinements times at most); else it says stalled.
     // A surface pressed against itself (self_contact) is a result too, and the same promise: a

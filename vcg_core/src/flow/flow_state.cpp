@@ -88,7 +88,11 @@ void FlowState::setPositions(const std::vector<Vec3>& p) {
 
 void FlowState::evaluateGeometry() {
   if (geometryEvaluated_) return;
-  computeGeometry(topology(), region_.positions(), opt_.area, geo_);
+  // The per-vertex quantities (areas, normals, angle sums) at the active vertices only: every
+  // integrator and the energy read them there (a free vertex and its ring), and a region's piece is
+  // mostly fixed rings and obstacles, whose angle sums alone were 8 % of a region's run
+  // (docs/benchmarks.md, "Regions: the attempt's cost").
+  computeGeometry(topology(), region_.positions(), opt_.area, geo_, &roles().active);
   struct Tally {
     double area = 0, minArea = std::numeric_limits<double>::infinity();
   };

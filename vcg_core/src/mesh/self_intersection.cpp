@@ -66,6 +66,10 @@ bool trianglesCross(const TriMesh& m, const Face& f, const Face& g) {
 // With `only`, the grid holds only the faces whose box meets the flagged faces' bounding box (a
 // pair needs a flagged face, whose box it overlaps): a step that moved a small region of a large
 // scan sorts the region's neighbourhood, not the scan (the sort was 40 % of a region's step).
+// A grid with at most kDenseCellsPerFace cells per face it holds, plus kDenseCellsAlways, is
+// numbered densely (candidatePairs).
+constexpr std::int64_t kDenseCellsPerFace = 16, kDenseCellsAlways = 1 << 16;
+
 template <class Visit>
 void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Visit visit) {
   const int nf = m.faceCount();
@@ -105,6 +109,21 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
     return c;
   };
   auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) { return std::uint64_t((i << 42) | (j << 21) | k); };
+  // A grid of few enough cells is numbered densely: its entries are bucketed by cell in linear
+  // time, and the flagged faces' cells are marked in an array, where a general grid sorts both
+  // (the two sorts took an eighth of lion-head's 1,000-face region run, docs/benchmarks.md
+  // "Regions: the attempt's cost"). The pairs tested are the same; only their order may differ.
+  const Cell top = cellOf(all.hi);
+  const std::int64_t ny = top[1] + 1, nz = top[2] + 1;
+  const bool dense = static_cast<double>(top[0] + 1) * static_cast<double>(ny) * static_cast<double>(nz) <=
+                     static_cast<double>(kDenseCellsPerFace * gridFaces + kDenseCellsAlways);
+  const std::int64_t cellCount = dense ? (top[0] + 1) * ny * nz : 0;
+  auto denseIndex = [&](std::uint64_t k) {
+    constexpr std::uint64_t mask = (1 << 21) - 1;
+    return static_cast<std::size_t>((static_cast<std::int64_t>(k >> 42) * ny + static_cast<std::int64_t>((k >> 21) & mask)) * nz +
+                                    static_cast<std::int64_t>(k & mask));
+  };
+  std::vector<std::uint8_t> flaggedMark;
   std::vector<Cell> lo(nf), hi(nf);
   // A face much larger than the mean (a CAD sliver's long side among small faces) would cover too
   // many cells: such faces are tested against every face instead.
@@ -134,18 +153,32 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
         for (std::int64_t j = lo[f][1]; j <= hi[f][1]; ++j)
           for (std::int64_t k = lo[f][2]; k <= hi[f][2]; ++k) {
             const std::uint64_t here = key(i, j, k);
-            if (filtered && !std::binary_search(flaggedCells.begin(), flaggedCells.end(), here)) continue;
+            if (filtered && (dense ? !flaggedMark[denseIndex(here)]
+                                   : !std::binary_search(flaggedCells.begin(), flaggedCells.end(), here)))
+              continue;
             entries.emplace_back(here, f);
           }
     }
-    if (pass == 0) {
+    if (pass == 0 && dense) {
+      flaggedMark.assign(static_cast<std::size_t>(cellCount), 0);
+      for (const auto& e : entries) flaggedMark[denseIndex(e.first)] = 1;
+    } else if (pass == 0) {
       flaggedCells.reserve(entries.size());
       for (const auto& e : entries) flaggedCells.push_back(e.first);
       std::sort(flaggedCells.begin(), flaggedCells.end());
       flaggedCells.erase(std::unique(flaggedCells.begin(), flaggedCells.end()), flaggedCells.end());
     }
   }
-  std::sort(entries.begin(), entries.end());
+  if (dense) {  // a counting sort by cell, stable
+    std::vector<std::uint32_t> start(static_cast<std::size_t>(cellCount) + 1, 0);
+    for (const auto& e : entries) ++start[denseIndex(e.first) + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    std::vector<std::pair<std::uint64_t, int>> sorted(entries.size());
+    for (const auto& e : entries) sorted[start[denseIndex(e.first)]++] = e;
+    entries.swap(sorted);
+  } else {
+    std::sort(entries.begin(), entries.end());
+  }
 
   auto test = [&](int f, int g) {
     if (only && !(*only)[f] && !(*only)[g]) return false;
@@ -191,6 +224,19 @@ bool selfIntersects(const TriMesh& mesh, const std::vector<std::uint8_t>* onlyFa
   bool found = false;
   candidatePairs(mesh, onlyFace, [&](int f, int g) { return found = trianglesCross(mesh, mesh.faces[f], mesh.faces[g]); });
   return found;
+}
+
+bool rewrittenFacesCross(const TriMesh& before, const TriMesh& after, const std::vector<std::uint8_t>& activeFace) {
+  if (before.positions != after.positions || before.faces.size() != after.faces.size())
+    return selfIntersects(after, &activeFace);
+  std::vector<std::uint8_t> rewritten(after.faces.size(), 0);
+  bool any = false;
+  for (std::size_t f = 0; f < after.faces.size(); ++f) {
+    if (after.faces[f] == before.faces[f]) continue;
+    if (!activeFace[f]) return selfIntersects(after, &activeFace);
+    rewritten[f] = 1, any = true;
+  }
+  return any && selfIntersects(after, &rewritten);
 }
 
 }  // namespace elastica

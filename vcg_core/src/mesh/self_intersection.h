@@ -23,4 +23,12 @@ std::vector<int> selfIntersectingFaces(const TriMesh& mesh, const std::vector<st
 /// selfIntersectingFaces(mesh, onlyFace) is not empty; stops at the first crossing pair.
 bool selfIntersects(const TriMesh& mesh, const std::vector<std::uint8_t>* onlyFace = nullptr);
 
+/// selfIntersects(after, &activeFace), for `after` made from `before` by rewriting some faces (edge
+/// flips: the same positions and face count), where no pair with an active face crossed in `before`
+/// (the flow's guard has just tested it) and the faces left as they were are flagged as they were
+/// there. Then only a pair with a rewritten face can cross, and those pairs alone are tested: after
+/// a step's flips, a handful of faces instead of the whole moving region. Where the positions or
+/// the face count differ, or a rewritten face is not flagged, every pair with an active face is.
+bool rewrittenFacesCross(const TriMesh& before, const TriMesh& after, const std::vector<std::uint8_t>& activeFace);
+
 }  // namespace elastica
