@@ -272,8 +272,11 @@ TEST(RegionFairing, RegionOfABigMeshKeepsTheRest) {
     for (std::size_t v = 0; v < interior.size(); ++v)
       if (!interior[v]) moved += std::memcmp(&m.positions[v], &noisy.positions[v], sizeof(Vec3)) != 0;
     EXPECT_EQ(moved, 0);
-    for (std::size_t f = 0; f < noisy.faces.size(); ++f)
-      if (!inCap[f]) EXPECT_EQ(m.faces[f], noisy.faces[f]) << "face " << f;
+    for (std::size_t f = 0; f < noisy.faces.size(); ++f) {
+      if (!inCap[f]) {
+        EXPECT_EQ(m.faces[f], noisy.faces[f]) << "face " << f;
+      }
+    }
   }
 }
 

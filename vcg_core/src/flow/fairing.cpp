@@ -788,7 +788,10 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
       report.stop = last.stop;
       previousEnergy = last.verdict.energy;
     } else {
-      last = {region.mesh(), region.selection(), level};
+      last = LastStage{};
+      last.mesh = region.mesh();
+      last.selection = region.selection();
+      last.level = level;
       FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
       requireMovingVertex(state);
       refineLater = level < opt.subdivisionLevels &&
