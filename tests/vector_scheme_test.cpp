@@ -108,7 +108,7 @@ TEST(VectorScheme, NoisySphereBecomesRound) {
   }
 }
 
-// A large closed mesh starts coarse (coarseStartLevels): a 40,962-vertex icosphere jittered by
+// A large closed mesh starts coarse (coarseStart): a 40,962-vertex icosphere jittered by
 // 0.3 of an edge is remeshed at twice its edge length (about 10,000 vertices), flowed there, Loop-
 // subdivided once back to its resolution and flowed to a true "converged". The result is what a
 // fair at full size gives: round (spread under 1 %), E within 1 % of 8π (the icosphere's own

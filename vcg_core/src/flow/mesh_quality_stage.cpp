@@ -30,7 +30,7 @@ bool stacksVertices(const TriMesh& mesh, const std::vector<std::uint8_t>& faces)
   return std::adjacent_find(points.begin(), points.end()) != points.end();
 }
 
-// coarseStartLevels(): the coarse start's level has at least this many vertices, where a step
+// coarseStart(): the coarse start's level has at least this many vertices, where a step
 // costs about 0.1 s (not tuned further). The 163,842-vertex noisy icosphere (noise of half an
 // edge) flowed 8,979 → 35,910 → 143,634 vertices in 18 + 2 + 3 steps, 7.5 s, where it took 30
 // steps and 122 s at full size (E 25.1317 both, spread 0.001 %); the 44,460-vertex refined elephant
@@ -81,7 +81,7 @@ std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& ro
 }
 
 // The median area of the faces flagged in `region` (all faces if empty), 0 if there are none; the
-// isotropic remeshing's size (remeshMovingRegion) and the coarse start's count (coarseStartLevels)
+// isotropic remeshing's size (remeshMovingRegion) and the coarse start's count (coarseStart)
 // both come from it. `total` (optional) receives the flagged faces' summed area.
 double medianFaceArea(const TriMesh& mesh, const std::vector<std::uint8_t>& region, double* total = nullptr) {
   std::vector<double> areas;
@@ -241,22 +241,18 @@ CoarseStart coarseStart(const MovingRegion& region) {
   // about 250,000). A mesh with a border counts its moving faces, the ones its remeshing rewrites,
   // at their mean area: its finest level then has about the vertices it came with, where the
   // median's size tripled a scan of mixed triangles (mannequin-devil: 12,977 to 43,784).
+  const std::vector<std::uint8_t> moving =
+      start.onMovingFaces ? movingFaces(region.mesh(), region.roles()) : std::vector<std::uint8_t>{};
   double total = 0;
-  const double median = start.onMovingFaces
-                            ? medianFaceArea(region.mesh(), movingFaces(region.mesh(), region.roles()), &total)
-                            : medianFaceArea(region.mesh(), {}, &total);
+  const double median = medianFaceArea(region.mesh(), moving, &total);
   if (!(median > 0) || !std::isfinite(total)) return start;
-  double count = 0;
-  if (start.onMovingFaces)
-    for (std::uint8_t m : movingFaces(region.mesh(), region.roles())) count += m;
-  const double area = start.onMovingFaces ? total / count : median;
+  const double area =
+      start.onMovingFaces ? total / static_cast<double>(std::count(moving.begin(), moving.end(), 1)) : median;
   const double floor = start.onMovingFaces ? kCoarseStartBorderedVertices : kCoarseStartVertices;
   for (double n = 0.5 * total / area; n >= 4.0 * floor; n /= 4) ++start.levels;
   start.coarsening = std::ldexp(std::sqrt(area / median), start.levels);
   return start;
 }
-
-int coarseStartLevels(const MovingRegion& region) { return coarseStart(region).levels; }
 
 void subdivideMovingFaces(MovingRegion& region) {
   std::vector<std::uint8_t> moving = movingFaces(region.mesh(), region.roles());

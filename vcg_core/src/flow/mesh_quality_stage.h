@@ -76,7 +76,7 @@ double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 /// renumbered only where movable ones were removed. The selection (if any) follows the faces. The
 /// remeshing is undone, and false returned, if it would make faces cross that did not cross before
 /// (mesh/self_intersection.h). `coarsening` multiplies the target edge length (a coarse start,
-/// coarseStartLevels: 2^k for k levels). `maxMoving` (0: none) bounds the moving vertices the
+/// coarseStart: 2^k for k levels). `maxMoving` (0: none) bounds the moving vertices the
 /// remeshing leaves (vertexBudget): where the curvature-adaptive edges would need more, the
 /// shortest targets are raised to a common floor until the predicted count fits, so the necks stay
 /// the most refined places, and splitting stops at the bound. `refineAt` (one flag per vertex, or
@@ -128,18 +128,16 @@ bool isotropicEdgeMissesThinnest(const MovingRegion& region);
 /// multiplies it by 4 (a 1-to-4 subdivision).
 long long vertexBudget(long long moving, int genus);
 
-/// Levels k of a coarse start: the moving faces remeshed at 2^k times their edge length (a 4^k-th
-/// of their vertices) and flowed there, then subdivided k times back to their resolution
-/// (subdivideLoop on a closed mesh, subdivideMovingFaces on a mesh with a border), so that the many
-/// steps a shape change takes run on the small mesh and the full-size one flows only the last few.
-/// A closed mesh keeps kCoarseStartVertices or more at the coarse level (0 below 4 × that many), a
-/// mesh with a border kCoarseStartBorderedVertices moving ones. 0 for a selection.
-int coarseStartLevels(const MovingRegion& region);
-
-/// coarseStartLevels() with what the run needs to make it: the levels, the remeshing's target as a
-/// multiple of isotropicTargetEdge() (2^k on a closed mesh; on a mesh with a border, 2^k times the
-/// edge of the moving faces' mean area over their median's), and whether the refinement subdivides
-/// the moving faces only (subdivideMovingFaces: a border) or the whole mesh (subdivideLoop).
+/// A coarse start: the moving faces remeshed at 2^k times their edge length (a 4^k-th of their
+/// vertices) and flowed there, then subdivided k times back to their resolution (subdivideLoop on a
+/// closed mesh, subdivideMovingFaces on a mesh with a border), so that the many steps a shape change
+/// takes run on the small mesh and the full-size one flows only the last few. A closed mesh keeps
+/// kCoarseStartVertices or more at the coarse level (0 levels below 4 × that many), a mesh with a
+/// border kCoarseStartBorderedVertices moving ones; a selection has none. With the levels: the
+/// remeshing's target as a multiple of isotropicTargetEdge() (2^k on a closed mesh; on a mesh with a
+/// border, 2^k times the edge of the moving faces' mean area over their median's), and whether the
+/// refinement subdivides the moving faces only (subdivideMovingFaces: a border) or the whole mesh
+/// (subdivideLoop).
 struct CoarseStart {
   int levels = 0;
   double coarsening = 1;
