@@ -136,6 +136,25 @@ def crossing_faces(mesh_check, V, F, tmp):
         return None
 
 
+def again(V, F, sel, V3, F3, rep, max_seconds):
+    """Fairs an output's region (the faces that are not the input's faces off the region) again
+    with the defaults and prints the region's energy before and after (region_energy, each mesh at
+    its own resolution): a 'converged' that a longer run takes much lower was not one."""
+    V3, F3 = np.asarray(V3, float), np.asarray(F3)
+    index = {k: i for i, k in enumerate(face_keys(V3, F3))}
+    kept = [index[k] for k in face_keys(V, F[np.setdiff1d(np.arange(len(F)), sel)])]
+    region = np.setdiff1d(np.arange(len(F3)), kept)
+    e1 = region_energy(V3, F3, region)
+    c0 = time.process_time()
+    V4, F4, rep2 = elastica.fair(V3, F3, region, feature_size=0, max_seconds=max_seconds)
+    V4, F4 = np.asarray(V4), np.asarray(F4)
+    index = {k: i for i, k in enumerate(face_keys(V4, F4))}
+    kept = [index[k] for k in face_keys(V3, np.delete(F3, region, axis=0))]
+    e2 = region_energy(V4, F4, np.setdiff1d(np.arange(len(F4)), kept))
+    print(f"<!-- again: {rep2['steps']} attempts, {rep2['stop']}, cpu {time.process_time() - c0:.1f} s, "
+          f"region E {e1:.4g} -> {e2:.4g} ({100 * (e2 / e1 - 1):+.1f} %) -->", flush=True)
+
+
 def sizes_table(args, V, F):
     """One region per size (or the whole scan), one table row each."""
     if args.loop:
@@ -151,7 +170,7 @@ def sizes_table(args, V, F):
     for size in args.sizes.split(","):
         rng = np.random.default_rng(args.seed)
         load = os.getloadavg()[0]
-        t0 = time.time()
+        t0, c0 = time.time(), time.process_time()
         if size == "all":
             V3, F3, rep = elastica.fair(V, F, feature_size=0, max_seconds=args.max_seconds)
             energies = f"{rep['mesh_energy_before']:.4g} -> {rep['mesh_energy_after']:.4g} (whole)"
@@ -169,9 +188,14 @@ def sizes_table(args, V, F):
                 index = set(face_keys(V3, F3))
                 kept = "yes" if all(k in index for k in face_keys(V, F[outside])) else "NO"
         secs = time.time() - t0
+        cpu = time.process_time() - c0
         stop = rep["stop"] + (f" ({rep['refused_because']})" if rep.get("refused_because") else "")
         print(f"| {name} | {len(V)} | {faces} | {secs:.2f} | {rep['steps']} ({rep.get('rejected_steps', 0)}) | "
               f"{stop} | {energies} | {kept} | {load:.1f}, {threads} |", flush=True)
+        print(f"<!-- cpu {cpu:.1f} s; stages (vertices, attempts, E): "
+              f"{[(st['vertices'], st['steps'], round(st['energy'], 4)) for st in rep['stages']]} -->", flush=True)
+        if args.again and size != "all":
+            again(V, F, sel, V3, F3, rep, args.again)
         if args.save:
             os.makedirs(args.save, exist_ok=True)
             elastica.write(os.path.join(args.save, f"{size}.ply"), V3, F3)
@@ -192,6 +216,8 @@ def main():
     ap.add_argument("--sizes", default="", help="comma-separated region sizes in faces, or all: one region each")
     ap.add_argument("--loop", type=int, default=0, help="with --sizes: Loop-subdivide the scan this many times")
     ap.add_argument("--check-outside", action="store_true", help="with --sizes: check the faces off the region")
+    ap.add_argument("--again", type=float, default=0, help="with --sizes: fair each output's region again with "
+                    "this max_seconds and print its energy (is a 'converged' kept by a longer run?)")
     args = ap.parse_args()
 
     V, F = elastica.read(args.mesh)
