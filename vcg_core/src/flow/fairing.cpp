@@ -577,18 +577,31 @@ void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report)
   report.untanglePasses += passes;
 }
 
+// Whether a stalled run's output is a worse surface than its input: its energy Loop-subdivided once
+// (resolution_check.h: what a mesh cannot hide by crumpling or pinching below its edges, and what
+// a CAD tessellation's slivers cannot hide either) above the input's. A thin CAD tube remeshed on
+// its surface (remeshTessellation) can have its wall's sheets pressed together by the flow and
+// stall crumpled, worse than it came (docs/benchmarks.md, "CAD parts on their surface").
+bool outputIsWorse(const TriMesh& output, const TriMesh& input, const FlowOptions& opt) {
+  Resolution in, out;
+  return measureResolution(input, opt, in) && measureResolution(output, opt, out) && out.loopEnergy > in.loopEnergy;
+}
+
 // A whole mesh's output that crosses itself where its input did not is refused, and a run whose
 // output is its input says so: the input comes back with StopReason::Unchanged and the reason in
 // FlowReport::refusedBecause. No step's guard lets faces cross, but a state the schedule adopts
 // without a step can: on rotor and anchor an untangling and then remeshings made 511 and 245 faces
 // cross, every step after was refused, and the run said `stalled` on them.
+// A stalled run's output that is a worse surface than its input is refused too (outputIsWorse).
 void refuseBrokenOutput(MovingRegion& region, TriMesh&& input, const FlowOptions& opt, FlowReport& report) {
   if (report.stop == StopReason::Cancelled) return;
   const bool crosses = !report.inputSelfIntersects && selfIntersects(region.mesh());
   const bool same = region.mesh().faces == input.faces && region.mesh().positions == input.positions;
-  if (!crosses && !same) return;
-  if (crosses) {
-    report.refusedBecause = "faces of the output cross each other (the input's did not)";
+  const bool worse = !crosses && !same && report.stop == StopReason::Stalled && outputIsWorse(region.mesh(), input, opt);
+  if (!crosses && !same && !worse) return;
+  if (crosses || worse) {
+    report.refusedBecause = crosses ? "faces of the output cross each other (the input's did not)"
+                                    : "the output, Loop-subdivided, has a higher energy than the input";
     region.edit([&](TriMesh& mesh, std::vector<std::uint8_t>&) {
       mesh = std::move(input);
       return true;
@@ -605,13 +618,15 @@ void refuseBrokenOutput(MovingRegion& region, TriMesh&& input, const FlowOptions
 // The working resolution of a CAD tessellation whose isotropic remeshing was refused: its long
 // edges split first (splitLongEdges: no input vertex moves), then remeshed to edges sized by the
 // part's thinnest feature (cadWorkingEdgeLength, measured on the input), or, if that remeshing is
-// refused or the part has no measurable thickness, at the split mesh's own size. The region is as
-// it came if every step is refused.
-bool remeshTessellation(MovingRegion& region) {
+// refused or the part has no measurable thickness, at the split mesh's own size. If all of these
+// make faces cross (thin walls: rotor, anchor), the input is remeshed on its own surface at the
+// working edge (remeshOnSurface: no vertex leaves the input's faces, its sharp edges stay), and
+// `onSurface` says so. The region is as it came if every remeshing is refused.
+bool remeshTessellation(MovingRegion& region, bool& onSurface) {
   TriMesh mesh = region.mesh();
   std::vector<std::uint8_t> selection = region.selection();
   const double working = cadWorkingEdgeLength(region);
-  if (!splitLongEdges(region)) return false;
+  if (!splitLongEdges(region)) return onSurface = working > 0 && remeshOnSurface(region, working);
   const double target = isotropicTargetEdge(region);
   if (working > 0 && target > 0 && remeshMovingRegion(region, false, working / target)) return true;
   if (remeshMovingRegion(region, false)) return true;
@@ -620,7 +635,7 @@ bool remeshTessellation(MovingRegion& region) {
     sel = std::move(selection);
     return true;
   });
-  return false;
+  return onSurface = working > 0 && remeshOnSurface(region, working);
 }
 
 // The start of the last stage that flowed (the region and the level) and how it ended: the
@@ -720,6 +735,11 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   int coarseLevels = coarse.levels;
   if (coarseLevels > 0 && !remeshMovingRegion(region, false, coarse.coarsening)) coarseLevels = 0;
   int refinements = 0;  // subdivisions made after the first stage
+  // A part remeshed on its surface (remeshTessellation: thin walls that every other remeshing put
+  // through each other) is remeshed on its surface later too: curvature-adaptive remeshings free to
+  // relax off it pressed rotor's wall's sheets together, and it stalled; kept on it, it became the
+  // Clifford torus (docs/benchmarks.md, "CAD parts on their surface").
+  bool onSurface = false;
   if (coarseLevels > 0) {
     ++report.remeshings;
     opt.subdivisionLevels += coarseLevels;
@@ -729,7 +749,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     // A part with handles whose thin walls the isotropic edge would step over is sized by its
     // thinnest feature instead (remeshTessellation, next).
     ++report.remeshings;
-  } else if (quality && !run.timeLimited() && region.selection().empty() && remeshTessellation(region)) {
+  } else if (quality && !run.timeLimited() && region.selection().empty() && remeshTessellation(region, onSurface)) {
     // A CAD part's flow starts from a fresh triangulation (remeshTessellation). A selection's does
     // not: its remeshing is judged against the scan around it, and on man.off Loop ×2's
     // 50,000-face region (its isotropic remeshing undone: faces crossed the foot beside it) the
@@ -773,7 +793,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   for (;; ++level) {
     bool remeshingRefused = false;
     if (remeshAdaptively) {
-      if (remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0))
+      if (remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0, onSurface))
         ++report.remeshings;
       else
         remeshingRefused = true;
@@ -851,7 +871,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     if (next == NextStage::Stop && checkResolution && opt.scheme == Scheme::Vector && measured && final &&
         !resolution.resolved()) {
       if (unresolvedRefinements < kMaxUnresolvedRefinements && !context.stopped() &&
-          remeshMovingRegion(region, true, 1, movingBudget, &resolution.unresolved, kCrossingRefinements)) {
+          remeshMovingRegion(region, true, 1, movingBudget, &resolution.unresolved, kCrossingRefinements, onSurface)) {
         ++unresolvedRefinements;
         ++report.remeshings;
         --level;

@@ -3,6 +3,7 @@
 #include "flow/region_guard.h"
 #include "mesh/self_intersection.h"
 #include "mesh/patch_remeshing.h"
+#include "mesh/surface_projection.h"
 #include "mesh/thickness.h"
 
 #include <elastica/geometry.h>
@@ -14,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 namespace elastica {
 namespace {
@@ -69,6 +71,9 @@ constexpr double kEdgesAcrossThinnest = 3, kThinnestQuantile = 0.1;
 // at 4.3 times became a ring too coarse for its shape (docs/benchmarks.md, "Held-out CAD parts and
 // the femur, traced").
 constexpr double kIsotropicOverThinnest = 2;
+// remeshOnSurface(): a CAD part's sharp edges, where its faces' normals differ by more than this (a
+// box's 90° edges, a thin wall's rim; not the few degrees between a tessellated cylinder's facets).
+constexpr double kSharpEdgeDegrees = 60;
 
 // Faces whose three vertices are all free: the region a remeshing may rewrite.
 std::vector<std::uint8_t> movingFaces(const TriMesh& mesh, const VertexRoles& roles) {
@@ -346,6 +351,25 @@ bool splitLongEdges(MovingRegion& moving) {
   return adopt(moving, std::move(split), region);
 }
 
+bool remeshOnSurface(MovingRegion& moving, double edge) {
+  const TriMesh& mesh = moving.mesh();
+  if (!(edge > 0) || !moving.selection().empty() || moving.topology().boundaryEdgeCount() > 0) return false;
+  std::vector<std::uint8_t> region = movingFaces(mesh, moving.roles());
+  if (hasFarVertex(mesh, region, edge)) return false;
+  const SurfaceProjector surface(mesh, kSharpEdgeDegrees);
+  TriMesh remeshed = mesh;
+  std::vector<double> sigma(mesh.positions.size(), edge);
+  std::vector<std::uint8_t> movable = moving.roles().free;
+  PatchRemeshingOptions options;
+  options.surface = &surface;
+  options.regionMayShrink = true;
+  options.maxVertices = kMaxSplitGrowth * mesh.vertexCount() + kMaxSplitExtra;  // splitLongEdges' bound
+  remeshRegion(remeshed, region, sigma, movable, options);
+  if (remeshed.vertexCount() == 0 || stacksVertices(remeshed, region)) return false;
+  if (!selfIntersects(mesh) && selfIntersects(remeshed)) return false;
+  return adopt(moving, std::move(remeshed), region);
+}
+
 double isotropicTargetEdge(const MovingRegion& moving) {
   const TriMesh& mesh = moving.mesh();
   return equilateralEdge(mesh, movingFaces(mesh, moving.roles()));
@@ -387,7 +411,7 @@ long long vertexBudget(long long moving, int genus) {
 }
 
 bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving,
-                        const std::vector<std::uint8_t>* refineAt, int crossingRefinements) {
+                        const std::vector<std::uint8_t>* refineAt, int crossingRefinements, bool onSurface) {
   const Topology& topo = moving.topology();
   const VertexRoles& roles = moving.roles();
   const TriMesh& mesh = moving.mesh();
@@ -434,6 +458,12 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   // them remeshings that collapse little (its band of fixed faces lies between its moving ones
   // too): its runs were measured so, and it has no coarse start (docs/benchmarks.md, "Regions").
   options.regionMayShrink = moving.selection().empty();
+  // On its surface: the flowed surface has no sharp edges to keep (an angle of 180° finds none).
+  std::unique_ptr<SurfaceProjector> surface;
+  if (onSurface) {
+    surface = std::make_unique<SurfaceProjector>(mesh, 180);
+    options.surface = surface.get();
+  }
   // Within `maxMoving`: the targets are fitted to it (fitTargets), and fitted again to a smaller
   // count in proportion where the remeshing left more than it predicted; a remeshing that still
   // leaves more is not made.

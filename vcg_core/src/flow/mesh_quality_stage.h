@@ -86,8 +86,12 @@ double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 /// `crossingRefinements` (0: none) tries again that many times where a whole-mesh remeshing made
 /// faces cross, with the targets halved around the crossing faces each time: two sheets closer than
 /// the edge length (femur: a tunnel 0.4 target edges wide) need edges of their gap there.
+/// `onSurface` keeps every vertex on the region's surface as it is (PatchRemeshingOptions::surface,
+/// without sharp edges): a remeshing that resamples the surface and never moves it, for a part
+/// whose thin walls every other remeshing put through each other (remeshOnSurface).
 bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coarsening = 1, long long maxMoving = 0,
-                        const std::vector<std::uint8_t>* refineAt = nullptr, int crossingRefinements = 0);
+                        const std::vector<std::uint8_t>* refineAt = nullptr, int crossingRefinements = 0,
+                        bool onSurface = false);
 
 /// A CAD tessellation's long thin triangles, split toward the edge length of remeshMovingRegion's
 /// isotropic target (moving faces only, one pass without relaxation): no input vertex moves and
@@ -99,6 +103,15 @@ bool remeshMovingRegion(MovingRegion& region, bool curvatureAdaptive, double coa
 /// nothing was split, an edge is a vertex thrown far away, the split would pass its bound (64×
 /// the vertices + 2,000), or the split made faces cross.
 bool splitLongEdges(MovingRegion& region);
+
+/// A CAD tessellation remeshed on its own surface toward edges of length `edge` (remeshRegion with
+/// PatchRemeshingOptions::surface: every vertex stays on the input's faces, its sharp edges, those
+/// whose faces' normals differ by more than kSharpEdgeDegrees, stay, and no collapse or flip crosses
+/// one): the part is not moved, only its triangulation. For thin walls whose every other remeshing
+/// makes faces cross (rotor, anchor: their relaxation or collapses put one side through the other).
+/// Whole closed meshes only. False, with the region as it was, on a selection or a mesh with a
+/// border, if the remeshing made faces cross where none crossed, stacked vertices or left no vertex.
+bool remeshOnSurface(MovingRegion& region, double edge);
 
 /// The edge length of a CAD tessellation's working resolution (issue 40 item 3): a few edges
 /// (kEdgesAcrossThinnest) across the part's thinnest feature (thinnestFeature, mesh/thickness.h:

@@ -1,10 +1,12 @@
 #include "mesh/patch_remeshing.h"
+#include "mesh/surface_projection.h"
 #include "support/parallel.h"
 
 #include <elastica/vertex_faces.h>
 
 #include <algorithm>
 #include <iterator>
+#include <set>
 #include <utility>
 
 namespace elastica {
@@ -29,9 +31,12 @@ bool turnsLittle(const Vec3& before, const Vec3& after) {
 class PatchEditor {
  public:
   PatchEditor(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
-              std::vector<std::uint8_t>& movable, double lengthScale, bool mayShrink)
-      : m_(mesh), patch_(patchFace), sigma_(sigma), movable_(movable), scale_(lengthScale), faceAlive_(mesh.faces.size(), 1),
-        vertexFaces_(faceListsOf(mesh)) {
+              std::vector<std::uint8_t>& movable, double lengthScale, bool mayShrink, const SurfaceProjector* surface)
+      : m_(mesh), patch_(patchFace), sigma_(sigma), movable_(movable), scale_(lengthScale), surface_(surface),
+        faceAlive_(mesh.faces.size(), 1), vertexFaces_(faceListsOf(mesh)) {
+    sharpDegree_.assign(m_.positions.size(), 0);
+    if (surface_)
+      for (const auto& [a, b] : sharpEdges(m_, surface_->featureAngleDegrees())) addSharp(a, b);
     sigma_.resize(m_.positions.size(), 0);
     movable_.resize(m_.positions.size(), 0);
     int patchSoFar = 0;
@@ -102,14 +107,23 @@ class PatchEditor {
     int f0, f1, c = -1, d = -1;
     if (!interiorEdge(a, b, f0, f1, c, d)) return false;
     const int x = m_.vertexCount();
-    m_.positions.push_back(0.5 * (m_.positions[a] + m_.positions[b]));
+    const bool alongSharp = isSharp(a, b);
+    Vec3 p = 0.5 * (m_.positions[a] + m_.positions[b]);
+    if (surface_) p = placed(p, alongSharp, areaNormal(f0) + areaNormal(f1));
+    m_.positions.push_back(p);
     sigma_.push_back(sigmaBetween(a, b));
     movable_.push_back(1);
+    sharpDegree_.push_back(0);
     vertexFaces_.emplace_back();
     addFace({x, b, c});
     addFace({x, a, d});
     setFace(f0, {a, x, c});
     setFace(f1, {b, x, d});
+    if (alongSharp) {
+      removeSharp(a, b);
+      addSharp(a, x);
+      addSharp(x, b);
+    }
     return true;
   }
 
@@ -123,6 +137,7 @@ class PatchEditor {
     std::vector<int> na = neighbours(a), nb = neighbours(b), common;
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
     if (common.size() != 2 || vertexFaces_[c].size() <= 3 || vertexFaces_[d].size() <= 3) return false;
+    if (!keepsSharpLines(a, b, p)) return false;
     const double s = sigmaBetween(a, b);
     for (int v : {a, b}) {
       for (int f : vertexFaces_[v]) {
@@ -134,6 +149,13 @@ class PatchEditor {
     }
     killFace(f0);
     killFace(f1);
+    std::vector<int> sharpAtA;  // a's sharp lines go on from b
+    for (int u : na)
+      if (isSharp(a, u)) sharpAtA.push_back(u);
+    for (int u : sharpAtA) {
+      removeSharp(a, u);
+      if (u != b) addSharp(b, u);
+    }
     for (int f : vertexFaces_[a]) {
       for (int& v : m_.faces[f]) v = v == a ? b : v;
       vertexFaces_[b].push_back(f);
@@ -147,6 +169,7 @@ class PatchEditor {
   // A short edge: two movable vertices meet at its midpoint; a movable vertex too close to a fixed
   // one (which stays) is joined, at its place, to one of its other movable neighbours instead.
   bool collapseShort(int a, int b) {
+    if (surface_) return collapseOnSurface(a, b);
     if (movable_[a] && movable_[b]) return collapse(a, b, 0.5 * (m_.positions[a] + m_.positions[b]));
     const int v = movable_[a] ? a : b;
     if (!movable_[v]) return false;
@@ -155,10 +178,27 @@ class PatchEditor {
     return false;
   }
 
+  // collapseShort on a surface to keep: one end joins the other, at the midpoint (put back on the
+  // surface) or, where only the kept end lies on a sharp line or it is a corner, at the kept end.
+  bool collapseOnSurface(int a, int b) {
+    for (const auto& [r, k] : {std::pair(a, b), std::pair(b, a)}) {
+      if (!movable_[r] || !movable_[k] || corner(r)) continue;
+      Vec3 p = m_.positions[k];
+      if (sharpDegree_[k] == 0 || (sharpDegree_[r] == 2 && !corner(k))) {
+        Vec3 n = Vec3::Zero();
+        for (int f : vertexFaces_[r]) n += areaNormal(f);
+        for (int f : vertexFaces_[k]) n += areaNormal(f);
+        p = placed(0.5 * (m_.positions[r] + m_.positions[k]), sharpDegree_[r] == 2, n);
+      }
+      if (collapse(r, k, p)) return true;
+    }
+    return false;
+  }
+
   // Flips (a, b) to (c, d) where that lowers Σ (valence − 6)² over the four vertices.
   bool flipForValence(int a, int b) {
     int f0, f1, c = -1, d = -1;
-    if (!interiorEdge(a, b, f0, f1, c, d) || c == d || hasEdge(c, d)) return false;
+    if (!interiorEdge(a, b, f0, f1, c, d) || c == d || hasEdge(c, d) || isSharp(a, b)) return false;
     const int va = valence(a), vb = valence(b), vc = valence(c), vd = valence(d);
     if (va <= 3 || vb <= 3) return false;
     auto dev = [](int v) { return (v - kTargetValence) * (v - kTargetValence); };
@@ -207,22 +247,35 @@ class PatchEditor {
       faceNormal_[f] = faceNormal(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]);
     });
     parallelFor(m_.vertexCount(), [&](int v) {
-      if (!movable_[v] || vertexFaces_[v].empty()) return;
+      if (!movable_[v] || vertexFaces_[v].empty() || corner(v)) return;
       Vec3 n = Vec3::Zero();
       for (int f : vertexFaces_[v]) n += faceNormal_[f];
-      Vec3 c = Vec3::Zero();
-      for (int k = ringOffset_[v]; k < ringOffset_[v + 1]; ++k) c += m_.positions[ringVertex_[k]];
-      Vec3 delta = c / static_cast<double>(ringOffset_[v + 1] - ringOffset_[v]) - m_.positions[v];
-      const double nn = n.squaredNorm();
-      if (nn > 0) delta -= delta.dot(n) / nn * n;
+      Vec3 delta = Vec3::Zero();
+      if (sharpDegree_[v] == 2) {
+        // Along its sharp line: toward the midpoint of its two neighbours on the line.
+        for (int k = ringOffset_[v]; k < ringOffset_[v + 1]; ++k)
+          if (isSharp(v, ringVertex_[k])) delta += 0.5 * (m_.positions[ringVertex_[k]] - m_.positions[v]);
+      } else {
+        Vec3 c = Vec3::Zero();
+        for (int k = ringOffset_[v]; k < ringOffset_[v + 1]; ++k) c += m_.positions[ringVertex_[k]];
+        delta = c / static_cast<double>(ringOffset_[v + 1] - ringOffset_[v]) - m_.positions[v];
+        const double nn = n.squaredNorm();
+        if (nn > 0) delta -= delta.dot(n) / nn * n;
+      }
       auto keepsTurned = [&](const Vec3& p) {
         for (int f : vertexFaces_[v])
           if (!turnsLittle(faceNormal_[f], normalOf(f, v, p))) return false;
         return true;
       };
       for (int halving = 0; halving < 4; ++halving, delta *= 0.5) {
-        if (keepsTurned(m_.positions[v] + delta)) {
-          next_[v] += delta;
+        Vec3 p = m_.positions[v] + delta;
+        if (surface_) {
+          const Vec3 moved = p;
+          p = placed(moved, sharpDegree_[v] == 2, n);
+          if ((p - moved).norm() > delta.norm()) continue;  // onto another sheet, or off the line
+        }
+        if (keepsTurned(p)) {
+          next_[v] = p;
           break;
         }
       }
@@ -329,6 +382,37 @@ class PatchEditor {
   }
   static void eraseFrom(std::vector<int>& list, int f) { list.erase(std::find(list.begin(), list.end(), f)); }
 
+  // p put on the surface to keep: on its sharp edges if `alongSharp`, else on its closest face
+  // turned toward `normal`; p itself if the surface has no such place.
+  Vec3 placed(const Vec3& p, bool alongSharp, const Vec3& normal) const {
+    Vec3 q = p;
+    if (alongSharp ? surface_->projectOnSharpEdge(p, q) : surface_->project(p, normal, q)) return q;
+    return p;
+  }
+  Vec3 areaNormal(int f) const {
+    const Face& t = m_.faces[f];
+    return faceNormal(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]);
+  }
+
+  // The sharp edges (PatchRemeshingOptions::surface) and how many meet at each vertex: 2 on a
+  // sharp line, other counts at a corner (where lines meet or end), which never moves.
+  bool isSharp(int a, int b) const { return !sharp_.empty() && sharp_.count(std::minmax(a, b)) > 0; }
+  bool corner(int v) const { return sharpDegree_[v] != 0 && sharpDegree_[v] != 2; }
+  void addSharp(int a, int b) {
+    if (sharp_.insert(std::minmax(a, b)).second) ++sharpDegree_[a], ++sharpDegree_[b];
+  }
+  void removeSharp(int a, int b) {
+    if (sharp_.erase(std::minmax(a, b)) > 0) --sharpDegree_[a], --sharpDegree_[b];
+  }
+  // Whether joining a to b at p keeps the sharp lines: a off every line (b then stays where it is
+  // if it is on one), or a on one line running on to b (a corner b stays where it is).
+  bool keepsSharpLines(int a, int b, const Vec3& p) const {
+    if (!surface_) return true;
+    if (sharpDegree_[a] == 0) return sharpDegree_[b] == 0 || p == m_.positions[b];
+    if (sharpDegree_[a] != 2 || !isSharp(a, b)) return false;
+    return !corner(b) || p == m_.positions[b];
+  }
+
   // The normal (area-scaled) of face f with vertex v at p.
   Vec3 normalOf(int f, int v, const Vec3& p) const {
     const Face& t = m_.faces[f];
@@ -367,6 +451,9 @@ class PatchEditor {
   std::vector<double>& sigma_;
   std::vector<std::uint8_t>& movable_;
   double scale_;
+  const SurfaceProjector* surface_;
+  std::set<std::pair<int, int>> sharp_;  // the sharp edges, as (smaller, larger)
+  std::vector<int> sharpDegree_;
   std::vector<std::uint8_t> faceAlive_;
   std::vector<std::vector<int>> vertexFaces_;  // faceListsOf(): collapses and flips remove faces from them
   std::vector<Vec3> next_;  // relax()'s new positions, reused
@@ -389,7 +476,7 @@ void remeshPatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vecto
 
 bool remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vector<double>& sigma,
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt) {
-  PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale, opt.regionMayShrink);
+  PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale, opt.regionMayShrink, opt.surface);
   bool withinLimit = true;
   for (int round = 0; round < opt.iterations; ++round) {
     // A split pass changes no length and no edge's faces' flags: the next pass can only split

@@ -14,6 +14,8 @@
 
 namespace elastica {
 
+class SurfaceProjector;
+
 struct PatchRemeshingOptions {
   /// Split–collapse–flip–relax rounds (Botsch & Kobbelt use 5–10). On 2,562-vertex spheres with
   /// polar caps of 40–120° cut away, 10 rounds of 10 passes left every restored patch's smallest
@@ -34,6 +36,15 @@ struct PatchRemeshingOptions {
   /// end of the face list, and nearly every collapse would be refused). Where the region still
   /// fills its slots the result is the same either way.
   bool regionMayShrink = false;
+  /// The surface to keep the region on (null: none; mesh/surface_projection.h): a CAD
+  /// tessellation's, whose remeshing must move its triangulation, not the part. With it, every
+  /// vertex a split makes, a collapse places or the relaxation moves is put on its closest point of
+  /// the surface (on a face turned its way), and a move the projection would carry farther than the
+  /// move itself (onto another sheet) is dropped. The region's sharp edges (sharpEdges at the
+  /// surface's feature angle, measured on the mesh handed over) stay: they are never flipped; a
+  /// vertex on one sharp line moves and is placed along it only (projected onto the surface's sharp
+  /// edges) and is collapsed only along it; a vertex where sharp lines meet or end never moves.
+  const SurfaceProjector* surface = nullptr;
 };
 
 /// Remeshes the faces flagged in `patchFace` (one byte per face) toward the edge length `sigma`

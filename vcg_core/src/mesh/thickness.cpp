@@ -1,72 +1,14 @@
 #include "mesh/thickness.h"
 #include "mesh/box.h"
+#include "mesh/face_tree.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <utility>
 
 namespace elastica {
 namespace {
-
-constexpr int kLeafFaces = 4;
-
-// A bounding-volume hierarchy of the faces (median split on the longest axis of the centroids'
-// box): the ray casts are O(log F) each rather than O(F).
-struct FaceTree {
-  struct Node {
-    Box box;
-    int left = -1, right = -1;  // children; -1 at a leaf
-    int begin = 0, end = 0;     // the leaf's range of `order`
-  };
-  std::vector<Node> nodes;
-  std::vector<int> order;
-
-  explicit FaceTree(const TriMesh& mesh) {
-    const int nf = mesh.faceCount();
-    order.resize(nf);
-    std::iota(order.begin(), order.end(), 0);
-    std::vector<Vec3> centre(nf);
-    for (int f = 0; f < nf; ++f) {
-      const Face& t = mesh.faces[f];
-      centre[f] = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / 3;
-    }
-    if (nf > 0) build(mesh, centre, 0, nf);
-  }
-
-  int build(const TriMesh& mesh, const std::vector<Vec3>& centre, int begin, int end) {
-    const int id = static_cast<int>(nodes.size());
-    nodes.emplace_back();
-    Box box, centres;
-    for (int i = begin; i < end; ++i) {
-      const Box b = boxOf(mesh, mesh.faces[order[i]]);
-      box.add(b.lo);
-      box.add(b.hi);
-      centres.add(centre[order[i]]);
-    }
-    nodes[id].box = box;
-    if (end - begin <= kLeafFaces) {
-      nodes[id].begin = begin;
-      nodes[id].end = end;
-      return id;
-    }
-    int axis = 0;
-    const Vec3 extent = centres.hi - centres.lo;
-    if (extent.y() > extent[axis]) axis = 1;
-    if (extent.z() > extent[axis]) axis = 2;
-    const int mid = begin + (end - begin) / 2;
-    // Ties broken by index, so the tree (and nothing else depends on it) is the same on every run.
-    std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end, [&](int a, int b) {
-      return centre[a][axis] < centre[b][axis] || (centre[a][axis] == centre[b][axis] && a < b);
-    });
-    const int left = build(mesh, centre, begin, mid);
-    const int right = build(mesh, centre, mid, end);
-    nodes[id].left = left;
-    nodes[id].right = right;
-    return id;
-  }
-};
 
 // Entry distance of the ray o + t d (t >= 0) into the box, or infinity if it misses it.
 double rayEntersBox(const Vec3& o, const Vec3& invD, const Box& box) {
@@ -112,7 +54,7 @@ std::vector<double> faceThickness(const TriMesh& mesh) {
   double volume = 0;
   for (const Face& t : mesh.faces) volume += mesh.positions[t[0]].dot(mesh.positions[t[1]].cross(mesh.positions[t[2]]));
   const double inward = volume < 0 ? 1 : -1;
-  const FaceTree tree(mesh);
+  const BoxTree tree(faceBoxes(mesh));
   std::vector<int> stack;
   for (int f = 0; f < nf; ++f) {
     const Face& t = mesh.faces[f];
@@ -126,7 +68,7 @@ std::vector<double> faceThickness(const TriMesh& mesh) {
     double best = inf;
     stack.assign(1, 0);
     while (!stack.empty()) {
-      const FaceTree::Node& node = tree.nodes[stack.back()];
+      const BoxTree::Node& node = tree.nodes[stack.back()];
       stack.pop_back();
       if (!(rayEntersBox(o, invD, node.box) < best)) continue;
       if (node.left < 0) {
