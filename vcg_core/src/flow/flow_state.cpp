@@ -44,7 +44,7 @@ void FlowState::maintain(double area) {
   checksSinceFlipSearch_ = 0;
   // The flips read the roles before the edit; the region drops its topology and roles if any edge
   // flipped, and buildConnectivity() builds them again.
-  if (mayFlip() && region_.edit([&](TriMesh& mesh, std::vector<std::uint8_t>&) { return flipToDelaunay(mesh, roles().free) > 0; }))
+  if (mayFlip() && region_.edit([&](TriMesh& mesh, std::vector<std::uint8_t>&) { return flipToDelaunay(mesh, &topology(), roles().free) > 0; }))
     buildConnectivity();
 }
 
