@@ -46,6 +46,32 @@ TEST(EdgeFlips, MakeTheMovingRegionDelaunay) {
   }
 }
 
+// Given the mesh's adjacency (a flow state's), the flips build none and make the same faces; an
+// adjacency of other faces is not read.
+TEST(EdgeFlips, TheCallersAdjacencyIsReadNotBuilt) {
+  TriMesh m = shapes::grid(10, 10, 1.0);
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> u(-0.45, 0.45);
+  for (Vec3& p : m.positions)
+    if (p.x() > 0 && p.x() < 10 && p.y() > 0 && p.y() < 10) p += Vec3(u(rng), u(rng), 0.1 * u(rng));
+  std::vector<std::uint8_t> movable(m.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); ++v) movable[v] = m.positions[v].x() > 2.5 && m.positions[v].x() < 7.5;
+  TriMesh built = m;
+  const int flips = flipToDelaunay(built, movable);
+  EXPECT_GT(flips, 5);
+  const Topology current(m.vertexCount(), m.faces);
+  TriMesh given = m;
+  Topology::resetLargestBuilt();
+  EXPECT_EQ(flipToDelaunay(given, &current, movable), flips);
+  EXPECT_EQ(Topology::largestBuilt(), 0);
+  EXPECT_EQ(given.faces, built.faces);
+  TriMesh other = m;  // `current` is no longer its adjacency after the flips above
+  other.faces = built.faces;
+  EXPECT_EQ(flipToDelaunay(other, &current, movable), flipToDelaunay(built, movable));
+  EXPECT_EQ(other.faces, built.faces);
+  EXPECT_GT(Topology::largestBuilt(), 0);
+}
+
 // Two quads whose far corners coincide (c above and d below a long, narrow rectangle: both long
 // sides are non-Delaunay, both would become edge c–d). One pass must not flip both: the second
 // flip would give c–d four faces.

@@ -117,6 +117,70 @@ TEST(Geometry, FlaggedVerticesOnly) {
   }
 }
 
+// Kept values (GeometryKept): after some vertices move, a computation that keeps the faces and
+// edges none of whose vertices moved gives the fresh computation's values bit for bit, tallies
+// included; a kept face that the new floor makes degenerate is computed again. A face flagged
+// though it moved keeps its old values: they are kept, not computed.
+namespace {
+void expectSameGeometry(const Geometry& a, const Geometry& b) {
+  EXPECT_EQ(a.meanEdgeLength, b.meanEdgeLength);
+  EXPECT_EQ(a.faceArea, b.faceArea);
+  EXPECT_EQ(a.faceNormal, b.faceNormal);
+  EXPECT_EQ(a.cornerDot, b.cornerDot);
+  EXPECT_EQ(a.cornerCot, b.cornerCot);
+  EXPECT_EQ(a.cornerArea, b.cornerArea);
+  EXPECT_EQ(a.edgeLength, b.edgeLength);
+  EXPECT_EQ(a.edgeWeight, b.edgeWeight);
+  EXPECT_EQ(a.vertexArea, b.vertexArea);
+  EXPECT_EQ(a.angleSum, b.angleSum);
+  EXPECT_EQ(a.minFaceArea, b.minFaceArea);
+  EXPECT_EQ(a.degenerate.zeroAreaFaces, b.degenerate.zeroAreaFaces);
+}
+}  // namespace
+
+TEST(Geometry, KeptFacesAndEdgesGiveTheFreshValues) {
+  TriMesh m = shapes::icosphere(1.0, 3);
+  const Topology t(m.vertexCount(), m.faces);
+  Geometry g, fresh;
+  computeGeometry(t, m.positions, VertexArea::Mixed, g);
+  std::vector<std::uint8_t> moved(m.vertexCount(), 0);
+  for (int v = 0; v < m.vertexCount(); ++v)
+    if (m.positions[v].z() > 0.5) m.positions[v] *= 1.5, moved[v] = 1;
+  std::vector<std::uint8_t> keptFaces(m.faceCount()), keptEdges(t.edgeCount());
+  for (int f = 0; f < m.faceCount(); ++f) keptFaces[f] = !moved[m.faces[f][0]] && !moved[m.faces[f][1]] && !moved[m.faces[f][2]];
+  for (int e = 0; e < t.edgeCount(); ++e) keptEdges[e] = !moved[t.edgeVertices(e)[0]] && !moved[t.edgeVertices(e)[1]];
+  computeGeometry(t, m.positions, VertexArea::Mixed, g, nullptr, {&keptFaces, &keptEdges});
+  computeGeometry(t, m.positions, VertexArea::Mixed, fresh);
+  expectSameGeometry(g, fresh);
+  // Flagged though a corner moved: the old values stay.
+  const Geometry before = g;
+  const int f0 = 0;
+  ASSERT_TRUE(keptFaces[f0]);
+  m.positions[m.faces[f0][0]] += Vec3(0.05, 0, 0);
+  computeGeometry(t, m.positions, VertexArea::Mixed, g, nullptr, {&keptFaces, nullptr});
+  EXPECT_EQ(g.faceArea[f0], before.faceArea[f0]);
+  computeGeometry(t, m.positions, VertexArea::Mixed, fresh);
+  EXPECT_NE(fresh.faceArea[f0], before.faceArea[f0]);
+}
+
+TEST(Geometry, KeptFaceUnderTheNewFloorIsComputedAgain) {
+  // A needle (0, 1, 2) of area 1.5e-12 beside a face whose far corner moves out: the mean edge
+  // grows from about 1 to about 3, the floor from about 1e-12 to about 1e-11.
+  TriMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {0.5, 3e-12, 0}, {0.5, -1, 0}};
+  m.faces = {{0, 1, 2}, {1, 0, 3}};
+  const Topology t(m.vertexCount(), m.faces);
+  Geometry g, fresh;
+  computeGeometry(t, m.positions, VertexArea::Mixed, g);
+  ASSERT_EQ(g.degenerate.zeroAreaFaces, 0u);
+  m.positions[3] = Vec3(0.5, -10, 0);
+  const std::vector<std::uint8_t> keptFaces = {1, 0};
+  computeGeometry(t, m.positions, VertexArea::Mixed, g, nullptr, {&keptFaces, nullptr});
+  computeGeometry(t, m.positions, VertexArea::Mixed, fresh);
+  EXPECT_EQ(fresh.degenerate.zeroAreaFaces, 1u);
+  expectSameGeometry(g, fresh);
+}
+
 TEST(Geometry, DegenerateElementsAreCountedAndFinite) {
   // A strip of 4 triangles plus a zero-area triangle (collinear) and a coincident vertex.
   TriMesh m;

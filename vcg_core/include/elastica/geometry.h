@@ -62,8 +62,18 @@ struct Geometry {
 /// `p.size()` must equal `topo.vertexCount()`. With `active` (one flag per vertex), the per-vertex
 /// quantities (areas, normals, angle sums) are computed at the flagged vertices only and are zero
 /// elsewhere, and `g.degenerate` counts flagged vertices only; faces and edges are all computed.
+/// With `kept`, `g` already holds this function's values (same `areaType`) for the faces and
+/// edges it flags, at positions `p`; a flow's fixed faces around a moving region are most of its
+/// mesh.
+struct GeometryKept {
+  /// One flag per face: the same corners as when `g` was computed, none of them moved. A flagged
+  /// face that was and stays non-degenerate keeps its values (they do not depend on the floors).
+  const std::vector<std::uint8_t>* faces = nullptr;
+  /// One flag per edge of `topo`, which `g` was computed for: neither end moved. Keeps its length.
+  const std::vector<std::uint8_t>* edges = nullptr;
+};
 void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g,
-                     const std::vector<std::uint8_t>* active = nullptr);
+                     const std::vector<std::uint8_t>* active = nullptr, const GeometryKept& kept = {});
 
 /// Convenience overload returning a fresh cache.
 Geometry computeGeometry(const Topology& topo, const std::vector<Vec3>& p,

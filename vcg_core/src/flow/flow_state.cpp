@@ -44,7 +44,7 @@ void FlowState::maintain(double area) {
   checksSinceFlipSearch_ = 0;
   // The flips read the roles before the edit; the region drops its topology and roles if any edge
   // flipped, and buildConnectivity() builds them again.
-  if (mayFlip() && region_.edit([&](TriMesh& mesh, std::vector<std::uint8_t>&) { return flipToDelaunay(mesh, roles().free) > 0; }))
+  if (mayFlip() && region_.edit([&](TriMesh& mesh, std::vector<std::uint8_t>&) { return flipToDelaunay(mesh, &topology(), roles().free) > 0; }))
     buildConnectivity();
 }
 
@@ -92,7 +92,34 @@ void FlowState::evaluateGeometry() {
   // integrator and the energy read them there (a free vertex and its ring), and a region's piece is
   // mostly fixed rings and obstacles, whose angle sums alone were 8 % of a region's run
   // (docs/benchmarks.md, "Regions: the attempt's cost").
-  computeGeometry(topology(), region_.positions(), opt_.area, geo_, &roles().active);
+  // The faces whose corners, and their positions, are those of the last evaluation keep their
+  // values, and so do the edges whose ends did not move on the same connectivity
+  // (computeGeometry's GeometryKept): a region's obstacles and fixed rings never move.
+  const std::vector<Vec3>& p = region_.positions();
+  const Topology& topo = topology();
+  const std::vector<Face>& faces = topo.faces();
+  GeometryKept kept;
+  if (evaluatedPositions_.size() == p.size() && evaluatedFaces_.size() == faces.size() &&
+      geo_.faceArea.size() == faces.size()) {
+    moved_.resize(p.size());
+    for (std::size_t v = 0; v < p.size(); ++v) moved_[v] = p[v] != evaluatedPositions_[v];
+    keptFaces_.resize(faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const Face& t = faces[f];
+      keptFaces_[f] = t == evaluatedFaces_[f] && !moved_[t[0]] && !moved_[t[1]] && !moved_[t[2]];
+    }
+    kept.faces = &keptFaces_;
+    if (evaluatedConnectivity_ == connectivityVersion_ && geo_.edgeLength.size() == static_cast<std::size_t>(topo.edgeCount())) {
+      keptEdges_.resize(topo.edgeCount());
+      for (int e = 0; e < topo.edgeCount(); ++e) keptEdges_[e] = !moved_[topo.edgeVertices(e)[0]] && !moved_[topo.edgeVertices(e)[1]];
+      kept.edges = &keptEdges_;
+    }
+  }
+  evaluatedPositions_.clear();  // until this evaluation has succeeded
+  computeGeometry(topo, p, opt_.area, geo_, &roles().active, kept);
+  evaluatedPositions_ = p;
+  evaluatedFaces_ = faces;
+  evaluatedConnectivity_ = connectivityVersion_;
   struct Tally {
     double area = 0, minArea = std::numeric_limits<double>::infinity();
   };

@@ -96,6 +96,10 @@ class FlowState {
   bool scaleFree_ = false;
 
   Geometry geo_;
+  std::vector<Vec3> evaluatedPositions_;  // what geo_ was last computed from (empty: nothing to keep)
+  std::vector<Face> evaluatedFaces_;
+  long long evaluatedConnectivity_ = -1;
+  std::vector<std::uint8_t> moved_, keptFaces_, keptEdges_;
   Curvature curv_;
   double energy_ = 0, activeArea_ = 0, activeMinArea_ = 0;
   std::vector<Vec3> lp_;

@@ -141,18 +141,48 @@ void SemiImplicitSystem::assembleMatrix(const Topology& topo, const std::vector<
 
 void SemiImplicitSystem::addEdgeLaplacian(const Topology& topo, const std::vector<double>& edgeWeight,
                                           const std::vector<int>& freeIndex, double scale) {
+  edgeSlot_.resize(topo.edgeCount(), {-1, -1});
+  double* const value = K_.valuePtr();  // read only while K_ stays compressed
   for (int e = 0; e < topo.edgeCount(); ++e) {
     const double w = scale * edgeWeight[e];
     if (w == 0) continue;
     const auto& ev = topo.edgeVertices(e);
     const int a = freeIndex[ev[0]], b = freeIndex[ev[1]];
-    if (a >= 0) K_.coeffRef(a, a) += w;
-    if (b >= 0) K_.coeffRef(b, b) += w;
+    if (!K_.isCompressed()) {  // an entry outside the pattern was inserted: coeffRef throughout
+      if (a >= 0) K_.coeffRef(a, a) += w;
+      if (b >= 0) K_.coeffRef(b, b) += w;
+      if (a >= 0 && b >= 0) K_.coeffRef(a, b) -= w, K_.coeffRef(b, a) -= w;
+      continue;
+    }
+    if (a >= 0) value[diagonalSlot_[a]] += w;
+    if (b >= 0) value[diagonalSlot_[b]] += w;
     if (a >= 0 && b >= 0) {
-      K_.coeffRef(a, b) -= w;
-      K_.coeffRef(b, a) -= w;
+      std::array<int, 2>& slot = edgeSlot_[e];
+      if (!holds(slot[0], b, a)) slot[0] = find(b, a);
+      if (!holds(slot[1], a, b)) slot[1] = find(a, b);
+      if (slot[0] < 0 || slot[1] < 0) {  // not in the pattern: inserted, as coeffRef does
+        K_.coeffRef(a, b) -= w;
+        K_.coeffRef(b, a) -= w;
+        slot = {-1, -1};
+        continue;
+      }
+      value[slot[0]] -= w;
+      value[slot[1]] -= w;
     }
   }
+}
+
+// Whether value slot `slot` is entry (row, column) of K_ (a slot kept from an earlier call).
+bool SemiImplicitSystem::holds(int slot, int row, int column) const {
+  return slot >= K_.outerIndexPtr()[column] && slot < K_.outerIndexPtr()[column + 1] && K_.innerIndexPtr()[slot] == row;
+}
+
+// The slot of entry (row, column), or −1 if the pattern lacks it.
+int SemiImplicitSystem::find(int row, int column) const {
+  const int* begin = K_.innerIndexPtr() + K_.outerIndexPtr()[column];
+  const int* end = K_.innerIndexPtr() + K_.outerIndexPtr()[column + 1];
+  const int* at = std::lower_bound(begin, end, row);
+  return at != end && *at == row ? static_cast<int>(at - K_.innerIndexPtr()) : -1;
 }
 
 }  // namespace elastica

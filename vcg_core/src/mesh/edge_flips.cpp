@@ -6,6 +6,7 @@
 #include <cmath>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -31,20 +32,24 @@ std::uint64_t edgeKey(int a, int b) {
   return (static_cast<std::uint64_t>(lo) << 32) | static_cast<std::uint32_t>(hi);
 }
 
-// The faces on each edge as the flips leave them: the adjacency of the mesh as given (a Topology,
-// built once), and beside it the edges whose faces a flip changed ({-1, -1}: flipped away).
+// The faces on each edge as the flips leave them: the adjacency of the mesh as given (the caller's
+// Topology where it is the mesh's, else one built here), and beside it the edges whose faces a
+// flip changed ({-1, -1}: flipped away).
 class LiveEdges {
  public:
-  explicit LiveEdges(const TriMesh& mesh) : topo_(mesh.vertexCount(), mesh.faces) {}
-  const Topology& initial() const { return topo_; }
+  LiveEdges(const TriMesh& mesh, const Topology* current) {
+    if (current && current->vertexCount() == mesh.vertexCount() && current->faces() == mesh.faces) topo_ = current;
+    else topo_ = &own_.emplace(mesh.vertexCount(), mesh.faces);
+  }
+  const Topology& initial() const { return *topo_; }
 
   // The faces on edge (a, b), in no order; {-1, -1} if there is no such edge, {f, -1} on a border.
   std::array<int, 2> faces(int a, int b) const {
     const auto it = changed_.find(edgeKey(a, b));
     if (it != changed_.end()) return it->second;
-    for (int k = topo_.ringBegin(a); k < topo_.ringEnd(a); ++k) {
-      if (topo_.ringVertex(k) != b) continue;
-      const auto& oc = topo_.edgeOppositeCorners(topo_.ringEdge(k));
+    for (int k = topo_->ringBegin(a); k < topo_->ringEnd(a); ++k) {
+      if (topo_->ringVertex(k) != b) continue;
+      const auto& oc = topo_->edgeOppositeCorners(topo_->ringEdge(k));
       return {oc[0] / 3, oc[1] < 0 ? -1 : oc[1] / 3};
     }
     return {-1, -1};
@@ -65,17 +70,10 @@ class LiveEdges {
   }
 
  private:
-  Topology topo_;
+  std::optional<Topology> own_;
+  const Topology* topo_ = nullptr;
   std::unordered_map<std::uint64_t, std::array<int, 2>> changed_;
 };
-
-}  // namespace
-
-int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int maxPasses) {
-  return flipToDelaunay(
-      mesh, [&](int a, int b, int c, int d, int, int) { return movable[a] && movable[b] && movable[c] && movable[d]; },
-      maxPasses);
-}
 
 // Pass by pass, each pass over the edges as they were when it began in increasing (lo, hi) order,
 // no face flipped twice in one pass, and no flip to an edge that existed when the pass began or
@@ -84,14 +82,18 @@ int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int 
 // it went away, so after the first pass only the edges of flipped faces and the edges stopped by
 // an existing one are looked at again (the same flips in the same order as a pass over every edge
 // of a freshly built adjacency, which the restoration's refinement did up to 100 times a patch).
-int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
+// With `ends` (one byte per vertex), the first pass looks only at the edges between flagged
+// vertices: `allowed` refuses the others, and a refused edge changes nothing (a region's piece is
+// mostly fixed rings and obstacles, whose edges were most of the pass).
+int flipPasses(TriMesh& mesh, const FlipFilter& allowed, int maxPasses, const Topology* current,
+               const std::vector<std::uint8_t>* ends) {
   const auto& p = mesh.positions;
-  LiveEdges live(mesh);
+  LiveEdges live(mesh, current);
   std::vector<std::pair<int, int>> edges;  // what the pass looks at, (lo, hi) in increasing order
   edges.reserve(live.initial().edgeCount());
   for (int e = 0; e < live.initial().edgeCount(); ++e) {
     const auto& ev = live.initial().edgeVertices(e);
-    edges.emplace_back(ev[0], ev[1]);
+    if (!ends || ((*ends)[ev[0]] && (*ends)[ev[1]])) edges.emplace_back(ev[0], ev[1]);
   }
   std::vector<std::uint8_t> touched(mesh.faces.size(), 0);
   std::vector<int> touchedFaces;
@@ -152,6 +154,22 @@ int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
   }
   return total;
+}
+
+}  // namespace
+
+int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int maxPasses) {
+  return flipToDelaunay(mesh, nullptr, movable, maxPasses);
+}
+
+int flipToDelaunay(TriMesh& mesh, const Topology* current, const std::vector<std::uint8_t>& movable, int maxPasses) {
+  return flipPasses(
+      mesh, [&](int a, int b, int c, int d, int, int) { return movable[a] && movable[b] && movable[c] && movable[d]; },
+      maxPasses, current, &movable);
+}
+
+int flipToDelaunay(TriMesh& mesh, const FlipFilter& allowed, int maxPasses) {
+  return flipPasses(mesh, allowed, maxPasses, nullptr, nullptr);
 }
 
 }  // namespace elastica

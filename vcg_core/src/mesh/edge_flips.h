@@ -4,6 +4,7 @@
 // rewritten (in place: each flip reuses the indices of the two faces it replaces).
 #pragma once
 
+#include <elastica/topology.h>
 #include <elastica/types.h>
 
 #include <cstdint>
@@ -16,6 +17,10 @@ namespace elastica {
 /// the two new triangles keep the orientation of the old pair and the new edge does not exist yet.
 /// Repeats up to `maxPasses` passes. Returns the number of flips.
 int flipToDelaunay(TriMesh& mesh, const std::vector<std::uint8_t>& movable, int maxPasses = 5);
+/// The same flips, reading `current`, the mesh's adjacency before them (a flow state keeps one),
+/// instead of building it: after most steps of a region's flow the flips rebuilt the piece's
+/// topology twice, once here. A `current` that is null or not the mesh's (other faces) is not read.
+int flipToDelaunay(TriMesh& mesh, const Topology* current, const std::vector<std::uint8_t>& movable, int maxPasses = 5);
 
 /// The general form: flips non-Delaunay edges where `allowed(a, b, c, d, f0, f1)` is true — edge
 /// (a, b) shared by faces f0 = (a, b, c) and f1 = (b, a, d), to become edge (c, d) — as long as the

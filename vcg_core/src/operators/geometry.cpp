@@ -63,16 +63,21 @@ double angleSumOf(const Topology& topo, const Geometry& g, int begin, int end) {
 double Geometry::cornerAngle(std::size_t c) const { return std::atan2(2 * faceArea[c / 3], cornerDot[c]); }
 
 void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g,
-                     const std::vector<std::uint8_t>* active) {
+                     const std::vector<std::uint8_t>* active, const GeometryKept& kept) {
   const int nv = topo.vertexCount(), nf = topo.faceCount(), ne = topo.edgeCount();
   if (static_cast<int>(p.size()) != nv) {
     throw InvalidInputError("computeGeometry: " + std::to_string(p.size()) + " positions for a topology of " +
                             std::to_string(nv) + " vertices");
   }
+  if ((kept.faces && (static_cast<int>(kept.faces->size()) != nf || static_cast<int>(g.faceArea.size()) != nf)) ||
+      (kept.edges && (static_cast<int>(kept.edges->size()) != ne || static_cast<int>(g.edgeLength.size()) != ne))) {
+    throw InvalidInputError("computeGeometry: kept-value flags for another mesh");
+  }
   if (active && static_cast<int>(active->size()) != nv) {
     throw InvalidInputError("computeGeometry: " + std::to_string(active->size()) + " vertex flags for a topology of " +
                             std::to_string(nv) + " vertices");
   }
+  const std::vector<std::uint8_t>* keptFace = g.areaType == areaType ? kept.faces : nullptr;
   g.areaType = areaType;
   g.faceArea.resize(nf);
   g.faceNormal.resize(nf);
@@ -89,6 +94,7 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
   // Edge lengths first: their mean sets the scale of every floor below.
   const double lengthSum = parallelSum(ne, [&](int e) {
     const auto& ev = topo.edgeVertices(e);
+    if (kept.edges && (*kept.edges)[e]) return g.edgeLength[e];
     return g.edgeLength[e] = (p[ev[1]] - p[ev[0]]).norm();
   });
   g.meanEdgeLength = ne > 0 ? lengthSum / ne : 0.0;
@@ -103,6 +109,11 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
     double minArea = std::numeric_limits<double>::infinity();
   };
   const FaceTally faceTally = parallelReduce(nf, FaceTally{}, [&](int f, FaceTally& tally) {
+    // A kept face: non-degenerate when computed (a unit normal) and now (its area above the floor).
+    if (keptFace && (*keptFace)[f] && g.faceArea[f] > areaFloor && g.faceNormal[f] != Vec3::Zero()) {
+      tally.minArea = std::min(tally.minArea, g.faceArea[f]);
+      return;
+    }
     const Face& t = faces[f];
     const Vec3 e[3] = {p[t[2]] - p[t[1]], p[t[0]] - p[t[2]], p[t[1]] - p[t[0]]};  // e[k] opposite corner k
     const Vec3 n = e[2].cross(-e[1]);
