@@ -443,6 +443,16 @@ TEST(ScanRegionFairingSteps, NoStageRepeatsTheLast) {
   }
 }
 
+// The same region (lion-head's 1,000 faces nearest vertex 7,895): the second reflow would remesh the
+// very state on which the first reflow's remeshing was refused (the stage between them ended where it
+// started). A remeshing is a function of the region and its level, so it is not tried again
+// (fairRegion's RefusedRemeshing): one refusal, where the run tried two.
+TEST(ScanRegionFairingSteps, ARefusedRemeshingIsNotTriedAgainOnTheSameState) {
+  const FlowReport r = fairScanRegion("lion-head.off", 7895, 1000, 600, "lion-head, 1,000 faces");
+  EXPECT_EQ(r.stop, StopReason::Converged);
+  EXPECT_EQ(r.remeshingsRefused, 1);
+}
+
 INSTANTIATE_TEST_SUITE_P(LibcgalDemo, ScanRegionFairing,
                          ::testing::Values(ScanRegions{"lion-head.off", 8}, ScanRegions{"mannequin-devil.off", 8}),
                          [](const ::testing::TestParamInfo<ScanRegions>& info) {

@@ -19,6 +19,7 @@ nlohmann::json toJson(const FlowReport& r) {
   j["rejected_steps"] = r.rejectedSteps;
   j["mesh_quality"] = {{"pre_subdivisions", r.preSubdivisions},
                        {"remeshings", r.remeshings},
+                       {"remeshings_refused", r.remeshingsRefused},
                        {"coarse_start_levels", r.coarseStartLevels},
                        {"vertex_budget", r.vertexBudget},
                        {"untangle_passes", r.untanglePasses},

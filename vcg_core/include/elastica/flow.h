@@ -180,6 +180,9 @@ struct FlowReport {
   /// scheme's flow (0: the region was not tangled, or a remeshing resampled it).
   int untanglePasses = 0;
   long long crossingRejections = 0;
+  /// Reflows' curvature-adaptive remeshings that were tried and undone (they made faces cross,
+  /// stacked vertices or left a degenerate corner): the stage after one flowed the mesh as it was.
+  int remeshingsRefused = 0;
   /// The input's faces already crossed: the embedding guard was off (nothing to keep).
   bool inputSelfIntersects = false;
   double seconds = 0;

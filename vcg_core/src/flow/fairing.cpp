@@ -661,6 +661,22 @@ bool repeatsLastStage(const LastStage& last, const MovingRegion& region, int lev
          last.mesh.positions == region.mesh().positions;
 }
 
+// The region on which a reflow's curvature-adaptive remeshing was refused, at its level. That
+// remeshing is a function of the region (its mesh and selection) and of the level's budget, so the
+// same region at the same level is refused again without trying: on lion-head's 1,000-face region
+// the second reflow remeshed the state on which the first had been refused (the stage between
+// them ended where it started), and the refused remeshings were 8 % of the run (docs/benchmarks.md,
+// "Regions: lion-head under a second").
+struct RefusedRemeshing {
+  TriMesh mesh;
+  std::vector<std::uint8_t> selection;
+  int level = -1;
+  bool holds(const MovingRegion& region, int atLevel) const {
+    return level == atLevel && selection == region.selection() && mesh.faces == region.mesh().faces &&
+           mesh.positions == region.mesh().positions;
+  }
+};
+
 // fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
 FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal,
                       const StageEnded& stageEnded) {
@@ -790,13 +806,20 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     report.vertexBudget = fixed + movingBudget * (1LL << (2 * std::max(0, opt.subdivisionLevels - level)));
   }
   LastStage last;
+  RefusedRemeshing refused;
   for (;; ++level) {
     bool remeshingRefused = false;
     if (remeshAdaptively) {
-      if (remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0, onSurface))
-        ++report.remeshings;
-      else
+      if (refused.holds(region, level)) {
         remeshingRefused = true;
+      } else if (remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0,
+                                    onSurface)) {
+        ++report.remeshings;
+      } else {
+        remeshingRefused = true;
+        ++report.remeshingsRefused;
+        refused = RefusedRemeshing{region.mesh(), region.selection(), level};
+      }
     }
     remeshAdaptively = false;
     StageVerdict verdict;
