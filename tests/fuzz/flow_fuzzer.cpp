@@ -55,9 +55,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   opt.subdivisionLevels = s % 2;
   opt.stepFactor = (s / 2) % 4 == 3 ? 1.0 : 1.0 / 150;  // sometimes far past the stable step
   opt.maxSteps = 50 + in.next();
-  // A bound on the run's wall time below libFuzzer's 60 s -timeout: under ASan and coverage a
-  // semi-implicit step with remeshing runs ~40x slower than in Release, and a slow flow is not
-  // what this target looks for (an endless one would still show: remeshing and the step loop
+  // A bound on the run's wall time well below libFuzzer's -timeout (scripts/fuzz.sh): under ASan and
+  // coverage a semi-implicit step with remeshing runs ~40x slower than in Release, and a slow flow
+  // is not what this target looks for (an endless one would still show: remeshing and the step loop
   // are bounded separately). 5 s, not more: the phases the limit does not cut (a remeshing before
   // the first step, a reflow's remeshing begun before the limit) run ~30-40x slower here too, and
   // the time they need must fit in the rest: a torus with a vertex thrown far, remeshed on its
