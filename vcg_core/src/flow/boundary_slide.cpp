@@ -1,5 +1,7 @@
 #include "flow/boundary_slide.h"
 
+#include "mesh/surface_projection.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -8,13 +10,6 @@ namespace elastica {
 namespace {
 
 constexpr double kCornerDegrees = 30;
-
-Vec3 closestOnSegment(const Vec3& a, const Vec3& b, const Vec3& q) {
-  const Vec3 d = b - a;
-  const double len2 = d.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((q - a).dot(d) / len2, 0.0, 1.0) : 0.0;
-  return a + t * d;
-}
 
 // The (up to two) neighbours of boundary vertex v along boundary edges.
 std::array<int, 2> boundaryNeighbours(const Topology& topo, int v) {
@@ -62,7 +57,7 @@ void BoundarySlider::attach(const Topology& topo, const std::vector<Vec3>& p, co
     if (in.dot(out) < std::cos(kCornerDegrees * M_PI / 180)) continue;
     double best = std::numeric_limits<double>::infinity();
     for (size_t s = 0; s < segment_.size(); ++s) {
-      const double d = (closestOnSegment(segment_[s][0], segment_[s][1], p[v]) - p[v]).squaredNorm();
+      const double d = (closestOnSegment(p[v], segment_[s][0], segment_[s][1]) - p[v]).squaredNorm();
       if (d < best) best = d, vertexSegment_[v] = static_cast<int>(s);
     }
   }
@@ -73,7 +68,7 @@ Vec3 BoundarySlider::project(int vertex, const Vec3& q) {
   // a vertex slides by a fraction of an edge per step.
   constexpr int kReach = 3;
   int bestSeg = vertexSegment_[vertex];
-  Vec3 best = closestOnSegment(segment_[bestSeg][0], segment_[bestSeg][1], q);
+  Vec3 best = closestOnSegment(q, segment_[bestSeg][0], segment_[bestSeg][1]);
   for (int dir = 0; dir < 2; ++dir) {
     int s = vertexSegment_[vertex], from = -1;
     for (int hop = 0; hop < kReach; ++hop) {
@@ -83,7 +78,7 @@ Vec3 BoundarySlider::project(int vertex, const Vec3& q) {
       if (next < 0) break;
       from = s;
       s = next;
-      const Vec3 c = closestOnSegment(segment_[s][0], segment_[s][1], q);
+      const Vec3 c = closestOnSegment(q, segment_[s][0], segment_[s][1]);
       if ((c - q).squaredNorm() < (best - q).squaredNorm()) best = c, bestSeg = s;
     }
   }

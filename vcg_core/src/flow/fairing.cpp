@@ -638,6 +638,13 @@ bool remeshTessellation(MovingRegion& region, bool& onSurface) {
   return onSurface = working > 0 && remeshOnSurface(region, working);
 }
 
+// Whether `region` at `atLevel` is the region (mesh and selection, bit for bit) kept at `level`.
+bool isRegionAt(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, int level, const MovingRegion& region,
+                int atLevel) {
+  return level == atLevel && selection == region.selection() && mesh.faces == region.mesh().faces &&
+         mesh.positions == region.mesh().positions;
+}
+
 // The start of the last stage that flowed (the region and the level) and how it ended: the
 // schedule's verdict, its stop reason and whether it was to refine later.
 struct LastStage {
@@ -657,8 +664,7 @@ struct LastStage {
 // stage repeated the second's 41 attempts, every energy the same to the last digit
 // (docs/benchmarks.md, "Regions: the attempt's cost").
 bool repeatsLastStage(const LastStage& last, const MovingRegion& region, int level) {
-  return last.level == level && last.selection == region.selection() && last.mesh.faces == region.mesh().faces &&
-         last.mesh.positions == region.mesh().positions;
+  return isRegionAt(last.mesh, last.selection, last.level, region, level);
 }
 
 // The region on which a reflow's curvature-adaptive remeshing was refused, at its level. That
@@ -671,10 +677,7 @@ struct RefusedRemeshing {
   TriMesh mesh;
   std::vector<std::uint8_t> selection;
   int level = -1;
-  bool holds(const MovingRegion& region, int atLevel) const {
-    return level == atLevel && selection == region.selection() && mesh.faces == region.mesh().faces &&
-           mesh.positions == region.mesh().positions;
-  }
+  bool holds(const MovingRegion& region, int atLevel) const { return isRegionAt(mesh, selection, level, region, atLevel); }
 };
 
 // fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.

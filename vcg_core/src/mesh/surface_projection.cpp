@@ -14,14 +14,14 @@ Vec3 unitNormal(const TriMesh& mesh, const Face& t) {
   return length > 0 && std::isfinite(length) ? Vec3(n / length) : Vec3(Vec3::Zero());
 }
 
+}  // namespace
+
 Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   const Vec3 ab = b - a;
   const double l2 = ab.squaredNorm();
   if (!(l2 > 0)) return a;
   return a + std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) * ab;
 }
-
-}  // namespace
 
 std::vector<std::pair<int, int>> sharpEdges(const TriMesh& mesh, double angleDegrees) {
   const double cosine = std::cos(angleDegrees * M_PI / 180);

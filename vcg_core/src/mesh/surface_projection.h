@@ -17,6 +17,9 @@ namespace elastica {
 /// dihedral's supplement: 90° on a box's edges), each once as (smaller, larger), in increasing order.
 std::vector<std::pair<int, int>> sharpEdges(const TriMesh& mesh, double angleDegrees);
 
+/// The closest point on segment (a, b) to p (a if the segment has no length).
+Vec3 closestOnSegment(const Vec3& p, const Vec3& a, const Vec3& b);
+
 /// The closest point on triangle (a, b, c) to p (Ericson, Real-Time Collision Detection, 5.1.5).
 Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
