@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 using namespace elastica;
@@ -155,4 +156,30 @@ TEST(NeedsRemeshing, AWholeMeshWithABorderIgnoresFacesBesideItsFixedRows) {
   const MovingRegion selection(selected, std::vector<std::uint8_t>(selected.faces.size(), 1), BoundaryMode::Fixed);
   ASSERT_LT(smallestMovingAngle(selection), 20);
   EXPECT_TRUE(needsRemeshing(selection));
+}
+
+// A run's wall-time limit reaches its remeshings (MovingRegion::deadline): with the limit passed,
+// the isotropic, the curvature-adaptive, the split and the on-surface remeshing are each refused
+// and the region stays bit for bit; without one, the same calls remesh. (A past deadline, so no
+// clock is read against a duration: the outcome does not depend on the machine's speed.)
+TEST(RemeshingDeadline, ARemeshingAfterTheRunsLimitIsRefusedAndTheRegionKept) {
+  const TriMesh thin = shapes::torus(8, 1, 48, 8);
+  auto unlimited = [&] { return MovingRegion(thin, {}, BoundaryMode::Fixed); };
+  {  // without a deadline, each call remeshes
+    MovingRegion a = unlimited(), b = unlimited(), c = unlimited(), d = unlimited();
+    ASSERT_TRUE(remeshMovingRegion(a, true));
+    ASSERT_TRUE(remeshMovingRegion(b, false));
+    ASSERT_TRUE(splitLongEdges(c));
+    ASSERT_TRUE(remeshOnSurface(d, 0.5));
+  }
+  MovingRegion late(thin, {}, BoundaryMode::Fixed);
+  late.setDeadline(std::chrono::steady_clock::now());
+  EXPECT_FALSE(remeshMovingRegion(late, true));
+  EXPECT_FALSE(remeshMovingRegion(late, false));
+  EXPECT_FALSE(splitLongEdges(late));
+  EXPECT_FALSE(remeshOnSurface(late, 0.5));
+  EXPECT_EQ(late.mesh().positions, thin.positions);
+  EXPECT_EQ(late.mesh().faces, thin.faces);
+  MovingRegion copy = late.copyTakingCaches();  // a stage's copy keeps the run's limit
+  EXPECT_EQ(copy.deadline(), late.deadline());
 }

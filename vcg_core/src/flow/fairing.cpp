@@ -104,6 +104,13 @@ struct Run {
   bool stopped = false;
 
   double elapsed() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
+  // The wall-time limit as a time point, for the remeshings to check (MovingRegion::deadline);
+  // none for no limit, or one beyond any run (a count of seconds the clock's ticks cannot hold).
+  MovingRegion::Deadline deadline() const {
+    constexpr double kBeyondAnyRun = 1e9;
+    if (!(opt.maxSeconds > 0) || opt.maxSeconds > kBeyondAnyRun) return MovingRegion::Deadline::max();
+    return start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(opt.maxSeconds));
+  }
   // Step, wall-time and flow-time limits; true if the run must stop.
   bool limitReached() {
     if (time >= timeLimit * (1 - 1e-9)) report.stop = StopReason::FeatureSize;
@@ -598,7 +605,9 @@ void refuseBrokenOutput(MovingRegion& region, TriMesh&& input, const FlowOptions
   const bool crosses = !report.inputSelfIntersects && selfIntersects(region.mesh());
   const bool same = region.mesh().faces == input.faces && region.mesh().positions == input.positions;
   const bool worse = !crosses && !same && report.stop == StopReason::Stalled && outputIsWorse(region.mesh(), input, opt);
-  if (!crosses && !same && !worse) return;
+  // A run the time limit ended before it kept anything (its remeshings cut by the limit) says so:
+  // the input is the best state it reached.
+  if (!crosses && !worse && (!same || report.stop == StopReason::MaxSeconds)) return;
   if (crosses || worse) {
     report.refusedBecause = crosses ? "faces of the output cross each other (the input's did not)"
                                     : "the output, Loop-subdivided, has a higher energy than the input";
@@ -699,6 +708,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   FlowReport report;
   report.scheme = opt.scheme;
   Run run{opt, internal, report, stageEnded};
+  region.setDeadline(run.deadline());
 
   const std::size_t selected = region.selection().size();
   if (selected != 0 && selected != region.mesh().faces.size())

@@ -345,7 +345,8 @@ bool splitLongEdges(MovingRegion& moving) {
   // flow could check its time limit. CAD parts peak far below the bound before their short edges
   // collapse (joint 29x, anchor 22x, rotor 14x).
   options.maxVertices = kMaxSplitGrowth * mesh.vertexCount() + kMaxSplitExtra;
-  if (!remeshRegion(split, region, sigma, none, options)) return false;
+  options.deadline = moving.deadline();
+  if (!remeshRegion(split, region, sigma, none, options) || moving.pastDeadline()) return false;
   if (split.vertexCount() == mesh.vertexCount()) return false;
   if (!selfIntersects(mesh) && selfIntersects(split)) return false;
   return adopt(moving, std::move(split), region);
@@ -364,7 +365,9 @@ bool remeshOnSurface(MovingRegion& moving, double edge) {
   options.surface = &surface;
   options.regionMayShrink = true;
   options.maxVertices = kMaxSplitGrowth * mesh.vertexCount() + kMaxSplitExtra;  // splitLongEdges' bound
+  options.deadline = moving.deadline();
   remeshRegion(remeshed, region, sigma, movable, options);
+  if (moving.pastDeadline()) return false;
   if (remeshed.vertexCount() == 0 || stacksVertices(remeshed, region)) return false;
   if (!selfIntersects(mesh) && selfIntersects(remeshed)) return false;
   return adopt(moving, std::move(remeshed), region);
@@ -458,6 +461,7 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   // them remeshings that collapse little (its band of fixed faces lies between its moving ones
   // too): its runs were measured so, and it has no coarse start (docs/benchmarks.md, "Regions").
   options.regionMayShrink = moving.selection().empty();
+  options.deadline = moving.deadline();
   // On its surface: the flowed surface has no sharp edges to keep (an angle of 180° finds none).
   std::unique_ptr<SurfaceProjector> surface;
   if (onSurface) {
@@ -479,6 +483,7 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
       remeshedRegion = region;
       std::vector<std::uint8_t> movable = roles.free;
       remeshRegion(remeshed, remeshedRegion, fitted, movable, options);
+      if (moving.pastDeadline()) return false;
       const long long left = remeshed.vertexCount() - fixed;
       if (maxMoving <= 0 || left <= maxMoving) break;
       if (attempt == kBudgetAttempts) return false;

@@ -75,7 +75,8 @@ double largestMovingCurvatureTimesEdge(const MovingRegion& region);
 /// move, and every face touching one, keep their positions and values bit for bit; vertices are
 /// renumbered only where movable ones were removed. The selection (if any) follows the faces. The
 /// remeshing is undone, and false returned, if it would make faces cross that did not cross before
-/// (mesh/self_intersection.h). `coarsening` multiplies the target edge length (a coarse start,
+/// (mesh/self_intersection.h), or if the region's deadline (MovingRegion::deadline) passed before
+/// it ended, as for splitLongEdges and remeshOnSurface. `coarsening` multiplies the target edge length (a coarse start,
 /// coarseStart: 2^k for k levels). `maxMoving` (0: none) bounds the moving vertices the
 /// remeshing leaves (vertexBudget): where the curvature-adaptive edges would need more, the
 /// shortest targets are raised to a common floor until the predicted count fits, so the necks stay

@@ -14,6 +14,7 @@ const VertexRoles& MovingRegion::roles() const {
 
 MovingRegion MovingRegion::copyTakingCaches() {
   MovingRegion copy(mesh_, selection_, mode_);
+  copy.deadline_ = deadline_;
   copy.topo_ = std::move(topo_);
   copy.roles_ = std::move(roles_);
   invalidate();  // a moved-from optional still holds a (moved-from) value

@@ -10,6 +10,7 @@
 #include <elastica/types.h>
 #include "flow/constraints.h"
 
+#include <chrono>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -56,6 +57,13 @@ class MovingRegion {
     if (changed) invalidate();
     return changed;
   }
+  /// The time by which work on the region must end (the run's wall-time limit; none by default):
+  /// its remeshings (flow/mesh_quality_stage.h) start no round after it and are undone if they end
+  /// after it, so that a run keeps its limit also where it remeshes.
+  using Deadline = std::chrono::steady_clock::time_point;
+  void setDeadline(Deadline deadline) { deadline_ = deadline; }
+  Deadline deadline() const { return deadline_; }
+  bool pastDeadline() const { return std::chrono::steady_clock::now() >= deadline_; }
   /// A copy that takes this region's topology and roles instead of copying them (this one builds
   /// them again if asked): for a flow stage, which works on its own copy while this one keeps the
   /// mesh as the stage found it, without holding the adjacency twice.
@@ -72,6 +80,7 @@ class MovingRegion {
   TriMesh mesh_;
   std::vector<std::uint8_t> selection_;
   BoundaryMode mode_;
+  Deadline deadline_ = Deadline::max();
   mutable std::optional<Topology> topo_;     // not thread-safe: a region belongs to one run
   mutable std::optional<VertexRoles> roles_;
 };

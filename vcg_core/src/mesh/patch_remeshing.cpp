@@ -5,6 +5,7 @@
 #include <elastica/vertex_faces.h>
 
 #include <algorithm>
+#include <chrono>
 #include <iterator>
 #include <set>
 #include <utility>
@@ -478,7 +479,7 @@ bool remeshRegion(TriMesh& mesh, std::vector<std::uint8_t>& regionFace, std::vec
                   std::vector<std::uint8_t>& movable, const PatchRemeshingOptions& opt) {
   PatchEditor patch(mesh, regionFace, sigma, movable, opt.lengthScale, opt.regionMayShrink, opt.surface);
   bool withinLimit = true;
-  for (int round = 0; round < opt.iterations; ++round) {
+  for (int round = 0; round < opt.iterations && std::chrono::steady_clock::now() < opt.deadline; ++round) {
     // A split pass changes no length and no edge's faces' flags: the next pass can only split
     // an edge at a vertex the pass made, and looks at those alone (in the same order).
     std::vector<std::pair<int, int>> edges = patch.patchEdges();

@@ -9,6 +9,7 @@
 
 #include <elastica/types.h>
 
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +46,11 @@ struct PatchRemeshingOptions {
   /// vertex on one sharp line moves and is placed along it only (projected onto the surface's sharp
   /// edges) and is collapsed only along it; a vertex where sharp lines meet or end never moves.
   const SurfaceProjector* surface = nullptr;
+  /// No round starts once this time has passed (default: never): a flow's wall-time limit
+  /// (FlowOptions::maxSeconds), which its remeshings would otherwise overrun by seconds before the
+  /// flow could check it. The rounds done are kept; the caller judges the result (the flow's quality
+  /// stages undo a remeshing that ends after the limit).
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
 };
 
 /// Remeshes the faces flagged in `patchFace` (one byte per face) toward the edge length `sigma`
