@@ -391,13 +391,26 @@ TEST(ScanRegionFairingLarge, RegionThroughTheScansOwnCrossingsFlows) {
 
 // The recipe's region around `vertex` of the lion's head (3 % of its faces, no noise),
 // faired to the limit shape within 600 steps, its contract checked (expectRegionKept).
-FlowReport fairLionRecipeRegion(int vertex, const std::string& what) {
-  const TriMesh scan = readSample("lion-head.off");
+FlowReport fairRecipeRegion(const char* mesh, int vertex, const std::string& what) {
+  const TriMesh scan = readSample(mesh);
   EXPECT_GT(scan.vertexCount(), vertex);
   const std::vector<int> region = regionAround(scan, scan.positions[vertex], 0.03);
   FlowOptions opt;
   opt.maxSteps = 600;
   return expectRegionKept(scan, region, opt, what);
+}
+
+FlowReport fairLionRecipeRegion(int vertex, const std::string& what) { return fairRecipeRegion("lion-head.off", vertex, what); }
+
+// The recipe's region 1 on the devil mannequin (777 faces around vertex 8,111, no noise):
+// its stages' tails at τ far beyond the shape's time lowered W by fractions of a percent an attempt
+// until the stop rule read them as settled, and main said converged at region E 49.73 (243
+// attempts), which a second run took to 29.62. With preconditioned L-BFGS past the shape's time
+// (VectorIntegrator::quasiNewton) the first run ends at 32.05 (322 attempts).
+TEST(ScanRegionFairingSteps, TheTailPastTheShapeTimeIsAccelerated) {
+  const FlowReport r = fairRecipeRegion("mannequin-devil.off", 8111, "mannequin-devil region 1");
+  EXPECT_EQ(r.stop, StopReason::Converged);
+  EXPECT_LT(r.regionEnergyAfter, 40);
 }
 
 // The recipe's region 6 on the lion's head (501 faces around vertex 5,375, as
@@ -443,14 +456,21 @@ TEST(ScanRegionFairingSteps, NoStageRepeatsTheLast) {
   }
 }
 
-// The same region (lion-head's 1,000 faces nearest vertex 7,895): the second reflow would remesh the
-// very state on which the first reflow's remeshing was refused (the stage between them ended where it
-// started). A remeshing is a function of the region and its level, so it is not tried again
-// (fairRegion's RefusedRemeshing): one refusal, where the run tried two.
+// The same region (lion-head's 1,000 faces nearest vertex 7,895): a reflow's remeshing is tried on
+// a stage's end state, and on main before this rule the second reflow remeshed the very state on
+// which the first reflow's remeshing was refused (the stage between them ended where it started).
+// A remeshing is a function of the region and its level, so it is not tried again (fairRegion's
+// RefusedRemeshing): no more refusals than distinct stage ends (main: one refusal and one end
+// state, where the run tried two; with VectorIntegrator::quasiNewton the second stage goes lower,
+// and two states were each refused once).
 TEST(ScanRegionFairingSteps, ARefusedRemeshingIsNotTriedAgainOnTheSameState) {
   const FlowReport r = fairScanRegion("lion-head.off", 7895, 1000, 600, "lion-head, 1,000 faces");
   EXPECT_EQ(r.stop, StopReason::Converged);
-  EXPECT_EQ(r.remeshingsRefused, 1);
+  std::vector<double> ends;
+  for (const FlowStage& stage : r.stages)
+    if (std::find(ends.begin(), ends.end(), stage.energy) == ends.end()) ends.push_back(stage.energy);
+  EXPECT_GE(r.remeshingsRefused, 1);
+  EXPECT_LE(r.remeshingsRefused, static_cast<int>(ends.size()));
 }
 
 INSTANTIATE_TEST_SUITE_P(LibcgalDemo, ScanRegionFairing,

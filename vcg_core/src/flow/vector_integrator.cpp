@@ -58,6 +58,8 @@ constexpr double kDampingStart = 1, kDampingGrow = 4, kDampingDecay = 0.5;
 // 50,000-face region went unshortened at strains of 0.4–0.5 and lowered W (docs/benchmarks.md,
 // "Regions: large selections").
 constexpr double kMaxStepStrain = 0.5;
+// VectorIntegrator::quasiNewton: how many secant pairs (accepted steps) the direction remembers.
+constexpr int kSecantMemory = 5;
 
 }  // namespace
 
@@ -66,6 +68,8 @@ struct VectorIntegrator::SparseSolver {
   SpdSolver spd;
 };
 
+VectorIntegrator::VectorIntegrator() : secant_(kSecantMemory) {}
+
 void VectorIntegrator::buildRows(const FlowState& state) {
   if (connectivityVersion_ == state.connectivityVersion()) return;
   const Topology& topo = state.topology();
@@ -73,22 +77,57 @@ void VectorIntegrator::buildRows(const FlowState& state) {
   int row = 0;
   for (int v = 0; v < topo.vertexCount(); ++v)
     if (state.roles().free[v]) freeIndex_[v] = row++;
+  freeRowCount_ = row;
   solver_ = std::make_shared<SparseSolver>();
   connectivityVersion_ = state.connectivityVersion();
 }
 
-bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
-  SparseSolver& s = *solver_;
-  const Eigen::SparseMatrix<double>& K = s.system.matrix();
-  const int n = static_cast<int>(K.rows());
-  Eigen::MatrixXd b(n, 3), x;
+Eigen::MatrixXd VectorIntegrator::freeRows(const std::vector<Vec3>& values) const {
+  Eigen::MatrixXd rows(freeRowCount_, 3);
   for (std::size_t v = 0; v < freeIndex_.size(); ++v)
-    if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = -0.25 * tau * gradient[v].transpose();
-  if (!s.spd.solveStep(K, b, x, kPreconditionFromRows)) return false;
+    if (freeIndex_[v] >= 0) rows.row(freeIndex_[v]) = values[v].transpose();
+  return rows;
+}
+
+bool VectorIntegrator::solveRows(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
+  return solver_->spd.solveStep(solver_->system.matrix(), rhs, x, kPreconditionFromRows);
+}
+
+// δ = −H·∂W/∂X: the plain step (H = H₀ = τ/4 · K⁻¹) or, with quasiNewton and pairs, L-BFGS's H.
+// An accelerated direction that is not a descent one (rounding, a conjugate-gradient solve's
+// inexact H₀) gives way to the plain step, and the pairs are dropped.
+bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
+  const Eigen::MatrixXd g = freeRows(gradient);
+  auto applyH0 = [&](const Eigen::MatrixXd& q, Eigen::MatrixXd& out) { return solveRows(0.25 * tau * q, out); };
+  Eigen::MatrixXd hg;
+  lastStepAccelerated_ = false;
+  if (quasiNewton_ && tau >= quasiNewtonFrom_ && !secant_.empty()) {
+    if (secant_.apply(g, applyH0, hg) && frobeniusDot(g, hg) > 0 && hg.allFinite()) lastStepAccelerated_ = true;
+    else secant_.clear();
+  }
+  if (!lastStepAccelerated_ && !applyH0(g, hg)) return false;
   delta_.assign(freeIndex_.size(), Vec3::Zero());
   for (std::size_t v = 0; v < freeIndex_.size(); ++v)
-    if (freeIndex_[v] >= 0) delta_[v] = x.row(freeIndex_[v]).transpose();
+    if (freeIndex_[v] >= 0) delta_[v] = -hg.row(freeIndex_[v]).transpose();
   return true;
+}
+
+// The pair of the last accepted step: s its change of the free positions, y the change of ∂W/∂X
+// across it (at this attempt's start, after the step and the edge flips that followed it). The
+// flips change W's discretisation after nearly every step of a region's tail, so y carries the
+// flipped edges' terms too; taking y again on the flipped mesh (∂W/∂X at the step's start once
+// more) reached the same energies in as many attempts (docs/benchmarks.md, "Regions: the τ ≫ T
+// tail"), so the pairs are kept across flips as they are. Pairs are kept only while the free
+// vertices are the same ones (a stage's integrator is new after a remeshing).
+void VectorIntegrator::addSecantPair(const FlowState& state, const Eigen::MatrixXd& gradient) {
+  const Eigen::MatrixXd x = freeRows(state.mesh().positions);
+  const bool sameVertices = previousFree_ == state.roles().free && previousX_.rows() == x.rows();
+  if (!sameVertices) secant_.clear();
+  if (pairPending_ && sameVertices) secant_.add(x - previousX_, gradient - previousGradient_);
+  previousX_ = x;
+  previousGradient_ = gradient;
+  previousFree_ = state.roles().free;
+  pairPending_ = false;
 }
 
 // The needle barrier's stiffness (bending_energy.h), which the bending matrix lacks: at a corner
@@ -177,20 +216,32 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   lastRejectionCrossed_ = false;
   lastStepHeldContact_ = false;
   lastExtrapolation_ = 1;
-  auto reject = [&] {
-    dampOvershoot(state.topology());
-    positions = saved_;
-    state.invalidate();
-    return false;
-  };
   const Geometry& geo = state.geometryOnly();
   const Topology& topo = state.topology();
   const std::vector<std::uint8_t>& active = state.roles().active;
   const std::vector<std::uint8_t>& activeFace = state.roles().activeFace;
   buildRows(state);
   bendingGradient(topo, geo, positions, active, bending_);
+  if (quasiNewton_) addSecantPair(state, freeRows(bending_.gradient));
   const double before = bending_.value;
   termBefore_ = bending_.term;
+  auto reject = [&] {
+    secant_.clear();
+    pairPending_ = false;
+    if (lastStepAccelerated_) {
+      // The pairs' model misled the step (W rose, faces turned or crossed, too many vertices to
+      // hold): the same attempt goes on with the plain step, whose refusal alone is the
+      // controller's business (τ halved, culprits damped); with no pairs left it is plain.
+      if (lastRejectionCrossed_) --crossingRejections_;
+      positions = saved_;
+      state.invalidate();
+      return tryStep(state, tau);
+    }
+    dampOvershoot(state.topology());
+    positions = saved_;
+    state.invalidate();
+    return false;
+  };
   const int nv = topo.vertexCount();
   const Curvature& curv = state.curvature();
   if (static_cast<int>(damping_.size()) != nv) damping_.assign(nv, 0.0);  // a new mesh
@@ -217,12 +268,15 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   normalBefore_ = geo.vertexNormal;
   // The barrier's stiffness at a step far beyond the shape's time scale can make the matrix too
   // ill-conditioned to factorise (pivots lost to rounding): the step is then solved without it.
-  if (!solve(bending_.gradient, tau) && !(withBarrier && (assemble(false), solve(bending_.gradient, tau)))) return false;
+  if (!solve(bending_.gradient, tau) && !(withBarrier && (assemble(false), solve(bending_.gradient, tau)))) {
+    secant_.clear();
+    return false;
+  }
 
   // The jump limit (jumpOvershoot): a longer step is shortened (every displacement by the same
   // factor), which keeps it a descent direction.
   const double overshoot = jumpOvershoot(state);
-  if (!std::isfinite(overshoot)) return false;
+  if (!std::isfinite(overshoot)) return lastStepAccelerated_ ? reject() : false;
   lastStepShortened_ = overshoot > 1;
   const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;
   held_.assign(nv, 0);
@@ -333,6 +387,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   lastMove_ = largest;
   lastNormalMove_ = largestNormal;
   state.slideBoundary();
+  pairPending_ = true;
   return true;
 }
 

@@ -12,6 +12,7 @@
 
 #include "flow/bending_energy.h"
 #include "flow/flow_state.h"
+#include "flow/secant_pairs.h"
 
 #include <cstdint>
 #include <memory>
@@ -22,6 +23,7 @@ namespace elastica {
 
 class VectorIntegrator {
  public:
+  VectorIntegrator();
   /// One attempt with step `tau`. On success the positions move and it returns true; if W rises,
   /// an active face turns over, a value is non-finite or (with the guard) faces cross, the
   /// positions are unchanged and it returns false.
@@ -63,6 +65,17 @@ class VectorIntegrator {
   /// step's model, W's matrix at the old positions, changes with the strain, not with the
   /// distance). On selections (measured: docs/benchmarks.md, "Regions: large selections").
   void strainJumpLimit(bool on) { strainJumpLimit_ = on; }
+  /// Preconditioned L-BFGS (flow/secant_pairs.h): the step's direction is H·∂W/∂X with H₀ the
+  /// step's own solve (τ/4 · K⁻¹) corrected by the last accepted steps s and the changes y of ∂W/∂X
+  /// across them. At τ far beyond the shape's time K is τ times a fixed matrix, the plain step is a
+  /// preconditioned gradient descent on W with a frozen model of its Hessian, and it crawls
+  /// (docs/benchmarks.md, "Regions: the τ ≫ T tail"). Only at τ ≥ fromTau (the shape's time T:
+  /// below it H₀ scales with τ, the controller's step size, and the accelerated steps there were
+  /// refused so often that τ stayed near T). The accelerated step passes the same checks as the
+  /// plain one; where it fails, the pairs are dropped and the same attempt takes the plain step.
+  void quasiNewton(bool on, double fromTau) { quasiNewton_ = on, quasiNewtonFrom_ = fromTau; }
+  /// Whether the last attempt's direction used secant pairs (false: the plain step).
+  bool lastStepAccelerated() const { return lastStepAccelerated_; }
   long long crossingRejections() const { return crossingRejections_; }
   /// Whether the last accepted step held vertices that would have made faces cross (a contact).
   bool lastStepHeldContact() const { return lastStepHeldContact_; }
@@ -75,15 +88,21 @@ class VectorIntegrator {
   void dampOvershoot(const Topology& topo);
   void relaxDamping();
   bool solve(const std::vector<Vec3>& gradient, double tau);
+  bool solveRows(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x);
+  Eigen::MatrixXd freeRows(const std::vector<Vec3>& values) const;
+  void addSecantPair(const FlowState& state, const Eigen::MatrixXd& gradient);
   bool addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
                            const std::vector<std::uint8_t>& activeFace, double tau);
 
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
   bool lastStepShortened_ = false, guardEmbedding_ = false, saddleStiffness_ = false, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
-  bool dampOvershoots_ = false, strainJumpLimit_ = false;
+  bool dampOvershoots_ = false, strainJumpLimit_ = false, quasiNewton_ = false, lastStepAccelerated_ = false;
+  bool pairPending_ = false;  // the last attempt was accepted: its pair is formed at the next attempt's start
   long long crossingRejections_ = 0;
   long long connectivityVersion_ = -1;
   std::vector<int> freeIndex_;
+  int freeRowCount_ = 0;
+  double quasiNewtonFrom_ = 0;
   std::vector<double> edgeScratch_;
   std::vector<int> cornerEdge_;
   std::vector<Vec3> saved_, faceNormalBefore_, normalBefore_, delta_;
@@ -95,6 +114,9 @@ class VectorIntegrator {
   std::vector<int> culprits_;
   std::vector<std::pair<double, int>> rises_;
   BendingEnergy bending_;
+  SecantPairs secant_;
+  Eigen::MatrixXd previousX_, previousGradient_;  // free rows at the last attempt's start
+  std::vector<std::uint8_t> previousFree_;
   struct SparseSolver;
   std::shared_ptr<SparseSolver> solver_;
 };
