@@ -12,6 +12,7 @@
 
 #include "flow/bending_energy.h"
 #include "flow/flow_state.h"
+#include "mesh/crossing_cache.h"
 
 #include <cstdint>
 #include <memory>
@@ -95,6 +96,7 @@ class VectorIntegrator {
   std::vector<int> culprits_;
   std::vector<std::pair<double, int>> rises_;
   BendingEnergy bending_;
+  CrossingCache crossing_;  // the embedding guard's test, the fixed faces' grid kept across attempts
   struct SparseSolver;
   std::shared_ptr<SparseSolver> solver_;
 };

@@ -34,12 +34,14 @@ bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const V
   return (u > 0 && v > 0 && w > 0) || (u < 0 && v < 0 && w < 0);
 }
 
+}  // namespace
+
 // Faces sharing no vertex cross if an edge of one crosses the other. Faces sharing one vertex s
 // (vcglib's rule): the segment halfway between s and the opposite edge of one face, from
 // (s + a)/2 to (s + b)/2, crosses the other face, which happens when one folds through the other
 // around s. Faces sharing an edge never count (a fold across an edge is a face turning over,
 // which the flow checks by normals).
-bool trianglesCross(const TriMesh& m, const Face& f, const Face& g) {
+bool facesCross(const TriMesh& m, const Face& f, const Face& g) {
   const auto& P = m.positions;
   int i = -1, j = -1;
   const int shared = sharedVertices(f, g, i, j);
@@ -58,6 +60,8 @@ bool trianglesCross(const TriMesh& m, const Face& f, const Face& g) {
   };
   return halfway(f, i, g) || halfway(g, j, f);
 }
+
+namespace {
 
 // Calls visit(f, g) for each pair of faces (f < g) whose boxes overlap, skipping pairs with
 // neither face in `only`; stops when visit returns true. Broad phase: a uniform grid of cells about
@@ -127,7 +131,6 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
   std::vector<Cell> lo(nf), hi(nf);
   // A face much larger than the mean (a CAD sliver's long side among small faces) would cover too
   // many cells: such faces are tested against every face instead.
-  constexpr std::int64_t kMaxCellsPerFace = 512;
   std::vector<std::uint8_t> large(nf, 0);
   std::vector<std::pair<std::uint64_t, int>> entries;
   entries.reserve(static_cast<std::size_t>(nf) * 4);
@@ -209,21 +212,11 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
 }  // namespace
 
 std::vector<int> selfIntersectingFaces(const TriMesh& mesh, const std::vector<std::uint8_t>* onlyFace) {
-  std::vector<std::uint8_t> hit(mesh.faces.size(), 0);
-  candidatePairs(mesh, onlyFace, [&](int f, int g) {
-    if (trianglesCross(mesh, mesh.faces[f], mesh.faces[g])) hit[f] = hit[g] = 1;
-    return false;
-  });
-  std::vector<int> out;
-  for (int f = 0; f < mesh.faceCount(); ++f)
-    if (hit[f]) out.push_back(f);
-  return out;
+  return facesOfCrossingPairs(mesh, [&](auto visit) { candidatePairs(mesh, onlyFace, visit); });
 }
 
 bool selfIntersects(const TriMesh& mesh, const std::vector<std::uint8_t>* onlyFace) {
-  bool found = false;
-  candidatePairs(mesh, onlyFace, [&](int f, int g) { return found = trianglesCross(mesh, mesh.faces[f], mesh.faces[g]); });
-  return found;
+  return anyPairCrosses(mesh, [&](auto visit) { candidatePairs(mesh, onlyFace, visit); });
 }
 
 bool rewrittenFacesCross(const TriMesh& before, const TriMesh& after, const std::vector<std::uint8_t>& activeFace) {
