@@ -14,6 +14,12 @@ constexpr std::uint64_t kNoKey = ~std::uint64_t(0);
 // pair whose boxes meet (clamping is monotone) and only makes such faces share cells.
 constexpr std::int64_t kCellOffset = std::int64_t(1) << 20, kCellLimit = (std::int64_t(1) << 21) - 1;
 
+// The cell's size in mean face boxes (the largest side of a face's box, averaged over the faces).
+// The plain test's grid uses 1; here fewer, larger cells made the per-call test cheaper (fewer
+// entries per moving face against a few more candidate pairs per cell; docs/benchmarks.md,
+// "Regions: the crossing test").
+constexpr double kCellPerMeanFace = 1.5;
+
 std::uint64_t keyOf(std::int64_t i, std::int64_t j, std::int64_t k) { return std::uint64_t((i << 42) | (j << 21) | k); }
 
 std::int64_t cellCount(const std::array<std::int64_t, 3>& lo, const std::array<std::int64_t, 3>& hi) {
@@ -88,8 +94,8 @@ void CrossingCache::build(const TriMesh& mesh, const std::vector<std::uint8_t>& 
   boxes_.resize(nf);
   lo_.resize(nf);
   hi_.resize(nf);
-  // Cells of about the mean face box over every face (as the plain test's grid), from the box of
-  // all faces; at most 2^20 cells across it.
+  // Cells of kCellPerMeanFace times the mean face box over every face, from the box of all faces;
+  // at most 2^20 cells across it.
   Box all;
   double extentSum = 0;
   for (int f = 0; f < nf; ++f) {
@@ -100,7 +106,7 @@ void CrossingCache::build(const TriMesh& mesh, const std::vector<std::uint8_t>& 
   }
   origin_ = nf > 0 ? all.lo : Vec3::Zero();
   const double span = nf > 0 ? (all.hi - all.lo).maxCoeff() : 0.0;
-  cell_ = std::max({nf > 0 ? extentSum / nf : 0.0, span / static_cast<double>(kCellOffset), 1e-300});
+  cell_ = std::max({nf > 0 ? kCellPerMeanFace * extentSum / nf : 0.0, span / static_cast<double>(kCellOffset), 1e-300});
 
   keptVertices_.clear();
   for (int f = 0; f < nf; ++f)
