@@ -1,7 +1,6 @@
 #include "flow/semi_implicit_system.h"
 #include "flow/spd_solver.h"
 #include "flow/vector_integrator.h"
-#include "mesh/self_intersection.h"
 #include "support/parallel.h"
 
 #include <Eigen/SparseCore>
@@ -302,7 +301,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
       // rest of the surface keeps flowing (homer: refusing such steps ended the run at E 193 after
       // 63 attempts; holding, it converged round in 51).
       if (guardEmbedding_)
-        for (int f : selfIntersectingFaces(state.mesh(), &activeFace))
+        for (int f : crossing_.crossingFaces(state.mesh(), activeFace))
           for (int v : topo.faces()[f]) culprits_.push_back(v), crossed = true;
       if (!crossed) {
         energyAfter_ = after;
@@ -365,7 +364,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     for (int v = 0; v < nv; ++v)
       if (freeIndex_[v] >= 0) positions[v] = saved_[v] + alpha * delta_[v];
     state.invalidate();
-    if (alpha > 1 && guardEmbedding_ && selfIntersects(state.mesh(), &activeFace)) {
+    if (alpha > 1 && guardEmbedding_ && crossing_.crosses(state.mesh(), activeFace)) {
       alpha = 1;  // the step itself passed the guard
       for (int v = 0; v < nv; ++v)
         if (freeIndex_[v] >= 0) positions[v] = saved_[v] + scale * delta_[v];

@@ -13,6 +13,7 @@
 #include "flow/bending_energy.h"
 #include "flow/flow_state.h"
 #include "flow/secant_pairs.h"
+#include "mesh/crossing_cache.h"
 
 #include <cstdint>
 #include <memory>
@@ -117,6 +118,7 @@ class VectorIntegrator {
   SecantPairs secant_;
   Eigen::MatrixXd previousX_, previousGradient_;  // free rows at the last attempt's start
   std::vector<std::uint8_t> previousFree_;
+  CrossingCache crossing_;  // the embedding guard's test, the fixed faces' grid kept across attempts
   struct SparseSolver;
   std::shared_ptr<SparseSolver> solver_;
 };

@@ -19,14 +19,12 @@ int sharedVertices(const Face& f, const Face& g, int& inF, int& inG) {
   return n;
 }
 
-// Segment pq crosses the interior of triangle abc: p and q strictly on opposite sides of its plane
-// and the crossing point strictly inside (signed volumes of the same sign). Touching counts not:
-// a flow meets exact contact with probability zero, and counting it would flag fans of valid
-// meshes through round-off.
-bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 n = (b - a).cross(c - a);
-  const double dp = n.dot(p - a), dq = n.dot(q - a);
-  if (!((dp > 0 && dq < 0) || (dp < 0 && dq > 0))) return false;
+// p and q strictly on opposite sides of a plane, given their signed distances (times any factor).
+bool opposite(double dp, double dq) { return (dp > 0 && dq < 0) || (dp < 0 && dq > 0); }
+
+// Segment pq, whose ends lie strictly on opposite sides of triangle abc's plane, crosses it
+// strictly inside (signed volumes of the same sign).
+bool segmentPassesInside(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 d = q - p;
   const double u = d.dot((b - p).cross(c - p));
   const double v = d.dot((c - p).cross(a - p));
@@ -34,19 +32,39 @@ bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const V
   return (u > 0 && v > 0 && w > 0) || (u < 0 && v < 0 && w < 0);
 }
 
+// Segment pq crosses the interior of triangle abc: p and q strictly on opposite sides of its plane
+// and the crossing point strictly inside. Touching counts not: a flow meets exact contact with
+// probability zero, and counting it would flag fans of valid meshes through round-off.
+bool segmentCrossesTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 n = (b - a).cross(c - a);
+  return opposite(n.dot(p - a), n.dot(q - a)) && segmentPassesInside(p, q, a, b, c);
+}
+
+}  // namespace
+
 // Faces sharing no vertex cross if an edge of one crosses the other. Faces sharing one vertex s
 // (vcglib's rule): the segment halfway between s and the opposite edge of one face, from
 // (s + a)/2 to (s + b)/2, crosses the other face, which happens when one folds through the other
 // around s. Faces sharing an edge never count (a fold across an edge is a face turning over,
 // which the flow checks by normals).
-bool trianglesCross(const TriMesh& m, const Face& f, const Face& g) {
+bool facesCross(const TriMesh& m, const Face& f, const Face& g) {
   const auto& P = m.positions;
   int i = -1, j = -1;
   const int shared = sharedVertices(f, g, i, j);
   if (shared == 0) {
+    // segmentCrossesTriangle for the six edges, each face's plane and each corner's side of the
+    // other's plane computed once (the same arithmetic, so the same answers).
+    const Vec3 &f0 = P[f[0]], &f1 = P[f[1]], &f2 = P[f[2]], &g0 = P[g[0]], &g1 = P[g[1]], &g2 = P[g[2]];
+    const Vec3 nf = (f1 - f0).cross(f2 - f0), ng = (g1 - g0).cross(g2 - g0);
+    double sideOfF[3], sideOfG[3];  // f's corners against g's plane, g's against f's
     for (int k = 0; k < 3; ++k) {
-      if (segmentCrossesTriangle(P[f[k]], P[f[(k + 1) % 3]], P[g[0]], P[g[1]], P[g[2]])) return true;
-      if (segmentCrossesTriangle(P[g[k]], P[g[(k + 1) % 3]], P[f[0]], P[f[1]], P[f[2]])) return true;
+      sideOfF[k] = ng.dot(P[f[k]] - g0);
+      sideOfG[k] = nf.dot(P[g[k]] - f0);
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int next = (k + 1) % 3;
+      if (opposite(sideOfF[k], sideOfF[next]) && segmentPassesInside(P[f[k]], P[f[next]], g0, g1, g2)) return true;
+      if (opposite(sideOfG[k], sideOfG[next]) && segmentPassesInside(P[g[k]], P[g[next]], f0, f1, f2)) return true;
     }
     return false;
   }
@@ -58,6 +76,8 @@ bool trianglesCross(const TriMesh& m, const Face& f, const Face& g) {
   };
   return halfway(f, i, g) || halfway(g, j, f);
 }
+
+namespace {
 
 // Calls visit(f, g) for each pair of faces (f < g) whose boxes overlap, skipping pairs with
 // neither face in `only`; stops when visit returns true. Broad phase: a uniform grid of cells about
@@ -127,7 +147,6 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
   std::vector<Cell> lo(nf), hi(nf);
   // A face much larger than the mean (a CAD sliver's long side among small faces) would cover too
   // many cells: such faces are tested against every face instead.
-  constexpr std::int64_t kMaxCellsPerFace = 512;
   std::vector<std::uint8_t> large(nf, 0);
   std::vector<std::pair<std::uint64_t, int>> entries;
   entries.reserve(static_cast<std::size_t>(nf) * 4);
@@ -209,21 +228,11 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
 }  // namespace
 
 std::vector<int> selfIntersectingFaces(const TriMesh& mesh, const std::vector<std::uint8_t>* onlyFace) {
-  std::vector<std::uint8_t> hit(mesh.faces.size(), 0);
-  candidatePairs(mesh, onlyFace, [&](int f, int g) {
-    if (trianglesCross(mesh, mesh.faces[f], mesh.faces[g])) hit[f] = hit[g] = 1;
-    return false;
-  });
-  std::vector<int> out;
-  for (int f = 0; f < mesh.faceCount(); ++f)
-    if (hit[f]) out.push_back(f);
-  return out;
+  return facesOfCrossingPairs(mesh, [&](auto visit) { candidatePairs(mesh, onlyFace, visit); });
 }
 
 bool selfIntersects(const TriMesh& mesh, const std::vector<std::uint8_t>* onlyFace) {
-  bool found = false;
-  candidatePairs(mesh, onlyFace, [&](int f, int g) { return found = trianglesCross(mesh, mesh.faces[f], mesh.faces[g]); });
-  return found;
+  return anyPairCrosses(mesh, [&](auto visit) { candidatePairs(mesh, onlyFace, visit); });
 }
 
 bool rewrittenFacesCross(const TriMesh& before, const TriMesh& after, const std::vector<std::uint8_t>& activeFace) {
