@@ -102,7 +102,7 @@ void runFair(FairArgs& a) {
                 report.regionEnergyBefore, report.regionEnergyAfter);
   std::printf("mesh energy %.9g -> %.9g (the whole mesh)\n", result.meshEnergyBefore, result.meshEnergyAfter);
   if (!result.flowEnergyLine.empty()) std::printf("%s\n", result.flowEnergyLine.c_str());
-  for (const std::string* line : {&result.amountLine, &result.movedLine})
+  for (const std::string* line : {&result.resolutionLine, &result.amountLine, &result.movedLine})
     if (!line->empty()) std::printf("%s\n", line->c_str());
   std::printf("wrote %s\n", a.output.c_str());
 

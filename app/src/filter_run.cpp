@@ -208,6 +208,15 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     r.log.push_back({Severity::Info, "region energy " + number(report.regionEnergyBefore, "%.9g") + " -> " +
                                          number(report.regionEnergyAfter, "%.9g") +
                                          " (the selected faces' vertices, fixed rings included)"});
+  if (selected && !std::isnan(report.regionResolutionGap)) {
+    const bool resolved = report.regionResolutionGap <= kRegionResolvedGap;
+    r.resolutionLine = std::string("region ") + (resolved ? "resolved" : "not resolved") +
+                       ": its energy Loop-subdivided once " + number(100 * report.regionResolutionGap, "%+.3g") + " %" +
+                       (report.regionRuns > 1 ? std::string("; the vector scheme's result was not resolved, the ") +
+                                                    nameOf(report.scheme) + " scheme's came back"
+                                              : "");
+    r.log.push_back({resolved ? Severity::Info : Severity::Warning, r.resolutionLine});
+  }
   r.log.push_back({Severity::Info, "total curvature energy " + number(r.meshEnergyBefore, "%.9g") + " -> " +
                                        number(r.meshEnergyAfter, "%.9g") + " (the whole mesh)"});
   // The flow's own start differs when it refined or remeshed the mesh first, or faired a region.

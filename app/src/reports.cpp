@@ -1,6 +1,8 @@
 #include <elastica/app/choices.h>
 #include <elastica/app/reports.h>
 
+#include <cmath>
+
 namespace elastica::app {
 
 nlohmann::json toJson(const FlowReport& r) {
@@ -10,6 +12,8 @@ nlohmann::json toJson(const FlowReport& r) {
   if (!r.regionFaces.empty() || r.stop == StopReason::Unchanged) {
     j["region_energy_before"] = r.regionEnergyBefore;
     j["region_energy_after"] = r.regionEnergyAfter;
+    if (!std::isnan(r.regionResolutionGap)) j["region_resolution_gap"] = r.regionResolutionGap;
+    j["region_runs"] = r.regionRuns;
   }
   if (!r.refusedBecause.empty()) {
     j["refused_because"] = r.refusedBecause;

@@ -161,6 +161,14 @@ struct EnergySample {
   double energy = 0;
 };
 
+/// fair(mesh, region, …): a region's result is resolved when its energy over its moving vertices
+/// rises by at most this fraction when the region is Loop-subdivided once
+/// (FlowReport::regionResolutionGap). Wider than a whole mesh's 2 %: Loop's masks pull a curved
+/// region in against its rim, which stays (a smooth cap of a 2,562-vertex sphere reads +2.4 %),
+/// while the vector scheme's faceted lids read +20 % to +1,600 % (docs/benchmarks.md, "Regions:
+/// resolved").
+inline constexpr double kRegionResolvedGap = 0.1;
+
 struct FlowReport {
   double energyInitial = 0, energyFinal = 0;
   long long steps = 0;          ///< steps taken (semi-implicit: attempts, accepted or not)
@@ -200,6 +208,15 @@ struct FlowReport {
   /// after is never above the before. NaN when the whole mesh was faired.
   double regionEnergyBefore = std::numeric_limits<double>::quiet_NaN();
   double regionEnergyAfter = std::numeric_limits<double>::quiet_NaN();
+  /// fair(mesh, region, …) run to its limit shape by the default scheme: how much the region's
+  /// energy over its moving vertices rises when the region is Loop-subdivided once, relative
+  /// (flow/region_resolution.h); above kRegionResolvedGap the mesh does not resolve the surface it stands for,
+  /// and the stop is not `converged`. NaN when not measured.
+  double regionResolutionGap = std::numeric_limits<double>::quiet_NaN();
+  /// fair(mesh, region, …): 2 when the default scheme's result did not resolve the region and the
+  /// semi-implicit scheme was run from the input too (the report is the run that came back, its
+  /// steps and seconds both runs'), else 1.
+  int regionRuns = 1;
   /// fair(mesh, region, …): what the run's last state failed, in words (empty if it came back).
   std::string refusedBecause;
   /// fair(mesh, region, …) whose last state failed: the stage (0-based, FlowReport::stages) whose

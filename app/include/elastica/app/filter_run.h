@@ -97,6 +97,10 @@ struct FairingResult {
   /// The amount and the distance moved as `log` words them (empty when not known), for faces that
   /// print their own summary.
   std::string amountLine, movedLine;
+  /// A region faired to its limit shape by the default scheme: whether its mesh resolves it (the
+  /// Loop-subdivided energy's rise, FlowReport::regionResolutionGap) and which scheme's result came
+  /// back; empty otherwise.
+  std::string resolutionLine;
 };
 
 /// Fairs `mesh` with `opt`: the whole mesh without a `region`, else the region's faces. With
