@@ -10,10 +10,13 @@
 #include <elastica/topology.h>
 #include "flow/bending_energy.h"
 #include "flow/constraints.h"
+#include "flow/flow_state.h"
+#include "flow/vector_integrator.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
@@ -198,4 +201,32 @@ TEST(VectorScheme, LargeBorderedMeshFlowsCoarseFirstAndKeepsItsBorder) {
   for (const Vec3& p : m.positions) highest = std::max(highest, std::abs(p.z()));
   EXPECT_LT(highest, 0.02);
   EXPECT_TRUE(test::keepsPositions(input, fixedRow, m));
+}
+
+// A refused accelerated step (VectorIntegrator::quasiNewton) is taken again as the plain step in
+// the same attempt, from the same positions: the retry keeps the attempt's ∂W/∂X (and W and the
+// matrix) instead of evaluating them again, so an attempt costs one gradient, its retry included.
+// A noisy sphere cap flowed far beyond its shape's time, as a region's tail is.
+TEST(VectorScheme, ARefusedAcceleratedStepsRetryKeepsItsGradient) {
+  TriMesh m = noisy(shapes::icosphere(1, 3), 0.3, 11);
+  std::vector<std::uint8_t> cap(m.faceCount(), 0);
+  for (int f = 0; f < m.faceCount(); ++f) {
+    const Face& t = m.faces[f];
+    cap[f] = (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]).z() > 0;
+  }
+  FlowState state(m, cap, FlowOptions{}, InternalFlowOptions{}, nullptr);
+  const double area = state.activeArea(), shapeTime = area * area / 50;
+  VectorIntegrator integrator;
+  integrator.dampOvershoots(true);
+  integrator.strainJumpLimit(true);
+  integrator.quasiNewton(true, shapeTime);
+  const double start = state.energy();
+  double tau = shapeTime;
+  constexpr int kAttempts = 80;
+  for (int attempt = 0; attempt < kAttempts; ++attempt) tau *= integrator.tryStep(state, tau) ? 2 : 0.5;
+  std::printf("accelerated steps refused: %lld of %d attempts; W %.4g -> %.4g\n", integrator.acceleratedRefusals(),
+              kAttempts, start, state.energy());
+  ASSERT_GT(integrator.acceleratedRefusals(), 0);
+  EXPECT_EQ(integrator.gradientEvaluations(), kAttempts);
+  EXPECT_LT(state.energy(), start);
 }

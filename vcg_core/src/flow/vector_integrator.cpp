@@ -220,22 +220,34 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   const std::vector<std::uint8_t>& active = state.roles().active;
   const std::vector<std::uint8_t>& activeFace = state.roles().activeFace;
   buildRows(state);
-  bendingGradient(topo, geo, positions, active, bending_);
-  if (quasiNewton_) addSecantPair(state, freeRows(bending_.gradient));
-  const double before = bending_.value;
-  termBefore_ = bending_.term;
+  // The plain retry of a refused accelerated step (`retryPlain_`) starts where the first try did:
+  // its gradient, W and matrix are the ones at hand.
+  if (!retryPlain_) {
+    bendingGradient(topo, geo, positions, active, bending_);
+    ++gradientEvaluations_;
+    if (quasiNewton_) addSecantPair(state, freeRows(bending_.gradient));
+    startEnergy_ = bending_.value;
+    termBefore_ = bending_.term;
+  }
+  const double before = startEnergy_;
   auto reject = [&] {
-    secant_.clear();
     pairPending_ = false;
     if (lastStepAccelerated_) {
       // The pairs' model misled the step (W rose, faces turned or crossed, too many vertices to
       // hold): the same attempt goes on with the plain step, whose refusal alone is the
-      // controller's business (τ halved, culprits damped); with no pairs left it is plain.
+      // controller's business (τ halved, culprits damped); with no pairs left it is plain. The
+      // retry starts from the same positions, so it keeps the attempt's gradient and matrix.
       if (lastRejectionCrossed_) --crossingRejections_;
+      ++acceleratedRefusals_;
       positions = saved_;
       state.invalidate();
-      return tryStep(state, tau);
+      secant_.clear();
+      retryPlain_ = true;
+      const bool accepted = tryStep(state, tau);
+      retryPlain_ = false;
+      return accepted;
     }
+    secant_.clear();
     dampOvershoot(state.topology());
     positions = saved_;
     state.invalidate();
@@ -261,13 +273,15 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
       if (freeIndex_[v] >= 0 && damping_[v] > 0) solver_->system.scaleDiagonal(freeIndex_[v], 1 + damping_[v]);
     return withBarrier;
   };
-  const bool withBarrier = assemble(true);
-  saved_ = positions;
-  faceNormalBefore_ = geo.faceNormal;
-  normalBefore_ = geo.vertexNormal;
+  if (!retryPlain_) {
+    withBarrier_ = assemble(true);
+    saved_ = positions;
+    faceNormalBefore_ = geo.faceNormal;
+    normalBefore_ = geo.vertexNormal;
+  }
   // The barrier's stiffness at a step far beyond the shape's time scale can make the matrix too
   // ill-conditioned to factorise (pivots lost to rounding): the step is then solved without it.
-  if (!solve(bending_.gradient, tau) && !(withBarrier && (assemble(false), solve(bending_.gradient, tau)))) {
+  if (!solve(bending_.gradient, tau) && !(withBarrier_ && (assemble(false), solve(bending_.gradient, tau)))) {
     secant_.clear();
     return false;
   }

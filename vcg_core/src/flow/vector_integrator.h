@@ -78,6 +78,10 @@ class VectorIntegrator {
   /// Whether the last attempt's direction used secant pairs (false: the plain step).
   bool lastStepAccelerated() const { return lastStepAccelerated_; }
   long long crossingRejections() const { return crossingRejections_; }
+  /// Accelerated steps refused and taken again as the plain step in the same attempt.
+  long long acceleratedRefusals() const { return acceleratedRefusals_; }
+  /// Evaluations of ∂W/∂X: one per attempt (the plain retry keeps its attempt's).
+  long long gradientEvaluations() const { return gradientEvaluations_; }
   /// Whether the last accepted step held vertices that would have made faces cross (a contact).
   bool lastStepHeldContact() const { return lastStepHeldContact_; }
   /// Whether the last attempt was rejected by the embedding guard alone.
@@ -98,8 +102,12 @@ class VectorIntegrator {
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
   bool lastStepShortened_ = false, guardEmbedding_ = false, saddleStiffness_ = false, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
   bool dampOvershoots_ = false, strainJumpLimit_ = false, quasiNewton_ = false, lastStepAccelerated_ = false;
+  // tryStep's plain retry of a refused accelerated step, and what it keeps of the first try: W at
+  // the attempt's start and whether its matrix has the barrier's stiffness.
+  bool retryPlain_ = false, withBarrier_ = false;
+  double startEnergy_ = 0;
   bool pairPending_ = false;  // the last attempt was accepted: its pair is formed at the next attempt's start
-  long long crossingRejections_ = 0;
+  long long crossingRejections_ = 0, acceleratedRefusals_ = 0, gradientEvaluations_ = 0;
   long long connectivityVersion_ = -1;
   std::vector<int> freeIndex_;
   int freeRowCount_ = 0;
