@@ -12,7 +12,9 @@ fairing amount) with the default options but max_seconds. Per run, one line:
   manifold (every edge on at most two faces, one fan per vertex), coincident vertices (used
   vertices at the same point), new crossing faces (vcglib's test through bench's mesh_check, output
   count minus input count), outside (the faces off the region: every one in the output, bit for
-  bit), read (elastica.read takes the PLY elastica.write wrote, with no vertex merged).
+  bit), read (elastica.read takes the PLY elastica.write wrote, with no vertex merged), and the
+  report's region_resolution_gap (how much the region's energy rises when Loop-subdivided once; above
+  0.1 a faceted lid, docs/benchmarks.md "Regions: resolved"), region_runs and scheme.
 
   PYTHONPATH=build/python bench/region_sweep.py ~/.cache/elastica/cgal-data-*/meshes/lion-head.off \
       --regions 8 --noise 0.1 --max-seconds 60 --mesh-check build/bin/mesh_check
@@ -192,7 +194,8 @@ def sizes_table(args, V, F):
         stop = rep["stop"] + (f" ({rep['refused_because']})" if rep.get("refused_because") else "")
         print(f"| {name} | {len(V)} | {faces} | {secs:.2f} | {rep['steps']} ({rep.get('rejected_steps', 0)}) | "
               f"{stop} | {energies} | {kept} | {load:.1f}, {threads} |", flush=True)
-        print(f"<!-- cpu {cpu:.1f} s; stages (vertices, attempts, E): "
+        print(f"<!-- resolution gap {rep.get('region_resolution_gap', float('nan')):+.3f}, runs {rep.get('region_runs', 1)}, "
+              f"scheme {rep['scheme']}; cpu {cpu:.1f} s; stages (vertices, attempts, E): "
               f"{[(st['vertices'], st['steps'], round(st['energy'], 4)) for st in rep['stages']]} -->", flush=True)
         if args.again and size != "all":
             again(V, F, sel, V3, F3, rep, args.again)
@@ -283,7 +286,8 @@ def main():
                       f"{before:10.4g} -> {after:<10.4g}  {'yes' if manifold(F3) else 'NO':8} "
                       f"{coincident(V3, F3):10} {new_cross:>12} {'yes' if outside_ok else 'NO':7} {read:5} "
                       f"({reg[0]:.4g} -> {reg[1]:.4g} / {mesh_e[0]:.4g} -> {mesh_e[1]:.4g})"
-                      + (f" refused: {rep['refused_because']}, kept stage {rep['kept_stage']}" if "refused_because" in rep else ""),
+                      + (f" refused: {rep['refused_because']}, kept stage {rep['kept_stage']}" if "refused_because" in rep else "")
+                      + f" resolution gap {rep.get('region_resolution_gap', float('nan')):+.3f}, runs {rep.get('region_runs', 1)}, {rep['scheme']}",
                       flush=True)
 
 
