@@ -26,9 +26,11 @@ import numpy as np
 import elastica
 
 
-def loop_subdivide(V, F, border=False):
+def loop_subdivide(V, F, border=False, edge_points=None):
     """One Loop step: edge points 3/8, 3/8, 1/8, 1/8; vertices (1 - k beta) v + beta sum of ring.
-    With `border`, a border edge's point is its midpoint and a border vertex stays."""
+    With `border`, a border edge's point is its midpoint and a border vertex stays. The old
+    vertices keep their indices; `edge_points`, a dict if given, receives (a, b) -> the new
+    vertex of edge ab (a < b)."""
     opposite = {}
     for a, b, c in F:
         for u, v, w in ((a, b, c), (b, c, a), (c, a, b)):
@@ -37,6 +39,8 @@ def loop_subdivide(V, F, border=False):
         raise SystemExit("loop_energy: the mesh has a border (see --border) or a non-manifold edge")
     n = len(V)
     index = {e: n + i for i, e in enumerate(opposite)}
+    if edge_points is not None:
+        edge_points.update(index)
     out = np.zeros((n + len(opposite), 3))
     ring = [[] for _ in range(n)]
     on_border = np.zeros(n, bool)

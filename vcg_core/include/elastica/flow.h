@@ -80,6 +80,12 @@ enum class StopReason {
   Unchanged,
 };
 
+/// Whether a run ended at one of its caller's limits (FlowOptions::maxSteps, maxSeconds, or the
+/// progress callback's cancel) rather than by its own stop.
+inline bool stoppedAtALimit(StopReason stop) {
+  return stop == StopReason::MaxSteps || stop == StopReason::MaxSeconds || stop == StopReason::Cancelled;
+}
+
 /// Progress of a run, given to FlowOptions::progress.
 struct FlowProgress {
   int level = 0;          ///< subdivision level of the current stage (0 = input resolution)

@@ -313,10 +313,6 @@ bool checksResolution(const FlowOptions& opt) {
   return opt.scheme == Scheme::Automatic && opt.flow == FlowType::Elastica && opt.remesh && !(opt.featureSize > 0);
 }
 
-bool limitStopped(StopReason stop) {
-  return stop == StopReason::MaxSteps || stop == StopReason::MaxSeconds || stop == StopReason::Cancelled;
-}
-
 // fairResolved's second run may take this many times the first run's attempts (a count, so that
 // the output does not depend on the machine). A semi-implicit attempt costs about a third of a
 // vector one on a region, and on lion-head's 1,000-face region that scheme needs 300 attempts to
@@ -344,7 +340,7 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
   second.maxSteps = std::min(stepsLeft, std::max(kSecondRunAttempts * report.steps, 1LL));
   if (opt.maxSeconds > 0) second.maxSeconds = opt.maxSeconds - report.seconds;
   const bool timeLeft = !(opt.maxSeconds > 0) || second.maxSeconds > 0;
-  if (!resolution.resolved() && !limitStopped(report.stop) && second.maxSteps > 0 && timeLeft) {
+  if (!resolution.resolved() && !stoppedAtALimit(report.stop) && second.maxSteps > 0 && timeLeft) {
     TriMesh other = input;
     std::vector<std::uint8_t> otherSelection = inputSelection;
     FlowReport otherReport;

@@ -368,9 +368,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   }
   auto relax = [&] { relaxTangentially(sub, freeVertices()); };
   // A step or time limit (or the caller's cancel) ended the last flow: no further stage.
-  auto limitReached = [&] {
-    return hole.stop == StopReason::MaxSteps || hole.stop == StopReason::MaxSeconds || hole.stop == StopReason::Cancelled;
-  };
+  auto limitReached = [&] { return stoppedAtALimit(hole.stop); };
   std::optional<double> fineStart;
   if (coarseFirst) {
     // The coarse patch's flow, judged like any stage; the fine one goes on from what it left,
