@@ -6,7 +6,7 @@ A region is the faces whose centroid lies within the --quantile of centroid dist
 vertex; with --noise, N(0, noise * mean edge) is added to its faces' vertices (one generator,
 numpy's default_rng(--seed), for both, as the issue's recipe). Each region runs as it is and noisy
 (--variants). Every run fairs to the limit shape (feature_size=0; the default since issue 42 is a
-fairing amount) with the default options but max_seconds. Per run, one line:
+fairing amount) with the default options but max_seconds (and --scheme). Per run, one line:
   faces, seconds, attempts, stop, the region's energy before -> after (measured here, on the
   vertices of the region's faces: the region and its fixed rings, each mesh at its own resolution),
   manifold (every edge on at most two faces, one fan per vertex), coincident vertices (used
@@ -174,14 +174,14 @@ def sizes_table(args, V, F):
         load = os.getloadavg()[0]
         t0, c0 = time.time(), time.process_time()
         if size == "all":
-            V3, F3, rep = elastica.fair(V, F, feature_size=0, max_seconds=args.max_seconds)
+            V3, F3, rep = elastica.fair(V, F, feature_size=0, scheme=args.scheme, max_seconds=args.max_seconds)
             energies = f"{rep['mesh_energy_before']:.4g} -> {rep['mesh_energy_after']:.4g} (whole)"
             kept, faces = "-", len(F)
         else:
             p = V[rng.integers(len(V))]
             d = np.linalg.norm(centroids - p, axis=1)
             sel = np.argsort(d, kind="stable")[:int(size)]
-            V3, F3, rep = elastica.fair(V, F, sel, feature_size=0, max_seconds=args.max_seconds)
+            V3, F3, rep = elastica.fair(V, F, sel, feature_size=0, scheme=args.scheme, max_seconds=args.max_seconds)
             energies = f"{rep['region_energy_before']:.4g} -> {rep['region_energy_after']:.4g}"
             faces = len(sel)
             kept = "-"
@@ -212,6 +212,7 @@ def main():
     ap.add_argument("--seed", type=int, default=7)
     ap.add_argument("--noise", type=float, default=0.1, help="times the mean edge")
     ap.add_argument("--max-seconds", type=float, default=60)
+    ap.add_argument("--scheme", default="auto", help="fair()'s scheme (auto, vector, semi-implicit)")
     ap.add_argument("--variants", default="clean,noisy", help="clean, noisy or both (comma-separated)")
     ap.add_argument("--mesh-check", default="", help="bench's mesh_check binary, for crossing faces")
     ap.add_argument("--only", default="", help="comma-separated run names (e.g. 3,3n) to run alone")
@@ -253,7 +254,7 @@ def main():
                 cross_in = crossing_faces(args.mesh_check, Vin, F, tmp)
                 t0 = time.time()
                 try:
-                    V3, F3, rep = elastica.fair(Vin, F, sel, feature_size=0, max_seconds=args.max_seconds)
+                    V3, F3, rep = elastica.fair(Vin, F, sel, feature_size=0, scheme=args.scheme, max_seconds=args.max_seconds)
                 except Exception as ex:  # noqa: BLE001 - a sweep reports every failure and goes on
                     print(f"{name:4} {len(sel):6} {time.time() - t0:8.2f}  error: {ex}")
                     continue

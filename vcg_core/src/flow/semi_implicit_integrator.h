@@ -8,6 +8,7 @@
 
 #include "flow/flow_state.h"
 #include "flow/tangential.h"
+#include "mesh/crossing_cache.h"
 
 #include <cstdint>
 #include <memory>
@@ -30,8 +31,10 @@ class SemiImplicitIntegrator {
   /// Whether the last attempt would have moved a vertex farther than InternalFlowOptions::maxJump
   /// (with InternalFlowOptions::shortenJumps, the accepted step was shortened to it).
   bool lastStepShortened() const { return lastStepShortened_; }
-  /// Rejects a step after which (with its drift passes) an active face crosses another face
-  /// (mesh/self_intersection.h). Off by default: an input whose faces already cross has nothing to keep.
+  /// Keeps active faces from crossing other faces (mesh/self_intersection.h): the free corners of
+  /// faces a step would make cross are held where they were (with their rings), as holdCulprits
+  /// does, and the step is refused if that does not free it; drift passes that make faces cross
+  /// are undone. Off by default: an input whose faces already cross has nothing to keep.
   void guardEmbedding(bool on) { guardEmbedding_ = on; }
   /// Attempts rejected by the embedding guard alone.
   long long crossingRejections() const { return crossingRejections_; }
@@ -60,6 +63,9 @@ class SemiImplicitIntegrator {
   /// large angle deficit (its energy term −4.8 of the patch's 119) raised its energy by 0.65 for a
   /// move of 0.015 ℓ, at every τ.
   bool holdCulprits(FlowState& state, double energyBefore, double energyLimit);
+  /// The free corners of `faces` (about to cross) and their rings' free vertices into held_; false
+  /// if more than kMaxContactCulprits corners or nothing new would be held.
+  bool holdCorners(FlowState& state, const std::vector<int>& faces);
 
   double lastNormalStep_ = 0, lastEnergyDecrease_ = 0;
   bool lastStepShortened_ = false;
@@ -68,7 +74,8 @@ class SemiImplicitIntegrator {
   long long connectivityVersion_ = -1;  // of the state that freeIndex_ and the solver were built for
   std::vector<int> freeIndex_;    // vertex → row of the system, or -1
   std::vector<double> lh_, speed_;
-  std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_, drift_;
+  std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_, drift_, stepped_;
+  CrossingCache crossing_;  // the embedding guard's test, its fixed faces binned once
   std::vector<double> vertexEnergyBefore_, vertexEnergyAfter_;
   std::vector<std::uint8_t> held_;  // free vertices the current attempt keeps in place
   std::vector<int> culprits_;
