@@ -221,7 +221,6 @@ void SemiImplicitIntegrator::noteVertexEnergies(FlowState& state, std::vector<do
 bool SemiImplicitIntegrator::holdCulprits(FlowState& state, double energyBefore, double energyLimit) {
   const Topology& topo = state.topology();
   const std::vector<Face>& faces = state.mesh().faces;
-  const std::vector<std::uint8_t>& free = state.roles().free;
   culprits_.clear();
   // Faces that turned over: their corners (a face's normal depends on them alone).
   const Geometry& geo = state.geometryOnly();
@@ -253,25 +252,22 @@ bool SemiImplicitIntegrator::holdCulprits(FlowState& state, double energyBefore,
     if (covered < needed || static_cast<int>(culprits_.size()) > kMaxCulprits) return false;  // spread out
   }
   // A vertex's energy follows its own position and its ring's: hold the free ones of both.
-  bool more = false;
-  auto hold = [&](int v) {
-    if (free[v] && !held_[v]) held_[v] = 1, more = true;
-  };
-  for (int c : culprits_) {
-    hold(c);
-    for (int k = topo.ringBegin(c); k < topo.ringEnd(c); ++k) hold(topo.ringVertex(k));
-  }
-  return more;
+  return holdCulpritsAndRings(state);
 }
 
 bool SemiImplicitIntegrator::holdCorners(FlowState& state, const std::vector<int>& faces) {
-  const Topology& topo = state.topology();
   const std::vector<std::uint8_t>& free = state.roles().free;
   culprits_.clear();
   for (int f : faces)
     for (int v : state.mesh().faces[f])
       if (free[v]) culprits_.push_back(v);
   if (static_cast<int>(culprits_.size()) > kMaxContactCulprits) return false;  // a step too large, not a contact
+  return holdCulpritsAndRings(state);
+}
+
+bool SemiImplicitIntegrator::holdCulpritsAndRings(FlowState& state) {
+  const Topology& topo = state.topology();
+  const std::vector<std::uint8_t>& free = state.roles().free;
   bool more = false;
   auto hold = [&](int v) {
     if (free[v] && !held_[v]) held_[v] = 1, more = true;

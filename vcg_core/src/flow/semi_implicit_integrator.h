@@ -66,6 +66,8 @@ class SemiImplicitIntegrator {
   /// The free corners of `faces` (about to cross) and their rings' free vertices into held_; false
   /// if more than kMaxContactCulprits corners or nothing new would be held.
   bool holdCorners(FlowState& state, const std::vector<int>& faces);
+  /// culprits_ and their rings' free vertices into held_; false if nothing new would be held.
+  bool holdCulpritsAndRings(FlowState& state);
 
   double lastNormalStep_ = 0, lastEnergyDecrease_ = 0;
   bool lastStepShortened_ = false;
