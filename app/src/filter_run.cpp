@@ -212,8 +212,9 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     const bool resolved = report.regionResolutionGap <= kRegionResolvedGap;
     r.resolutionLine = std::string("region ") + (resolved ? "resolved" : "not resolved") +
                        ": its energy Loop-subdivided once " + number(100 * report.regionResolutionGap, "%+.3g") + " %" +
-                       (report.regionRuns > 1 ? std::string("; the vector scheme's result was not resolved, the ") +
-                                                    nameOf(report.scheme) + " scheme's came back"
+                       (report.regionRuns > 1 ? std::string("; the vector scheme's first attempts or result were not resolved, "
+                                                                "the semi-implicit scheme ran too, the ") +
+                                                    nameOf(report.scheme) + " scheme's result came back"
                                               : "");
     r.log.push_back({resolved ? Severity::Info : Severity::Warning, r.resolutionLine});
   }

@@ -219,9 +219,9 @@ struct FlowReport {
   /// (flow/region_resolution.h); above kRegionResolvedGap the mesh does not resolve the surface it stands for,
   /// and the stop is not `converged`. NaN when not measured.
   double regionResolutionGap = std::numeric_limits<double>::quiet_NaN();
-  /// fair(mesh, region, …): 2 when the default scheme's result did not resolve the region and the
-  /// semi-implicit scheme was run from the input too (the report is the run that came back, its
-  /// steps and seconds both runs'), else 1.
+  /// fair(mesh, region, …): 2 when the default scheme's result (or its first attempts, a probe)
+  /// did not resolve the region and the semi-implicit scheme was run from the input too (the
+  /// report is the run that came back, its steps and seconds all runs'), else 1.
   int regionRuns = 1;
   /// fair(mesh, region, …): what the run's last state failed, in words (empty if it came back).
   std::string refusedBecause;

@@ -318,6 +318,38 @@ bool checksResolution(const FlowOptions& opt) {
 // vector one on a region, and on lion-head's 1,000-face region that scheme needs 300 attempts to
 // the 219 of the vector scheme's run (docs/benchmarks.md, "Regions: resolved").
 constexpr long long kSecondRunAttempts = 2;
+// fairResolved's probe: the vector scheme's first kLidProbeAttempts attempts. A region it will
+// leave as a lid already reads as one there: lion-head's 1,000-face region's Loop gap is +219 %
+// after 20 attempts, +1,582 % after its 219; on the 32 recipe regions every probe above
+// kRegionResolvedGap was a region whose vector result was a lid (11 of 18), and none of the 14 the
+// vector scheme resolves read above it (docs/benchmarks.md, "Regions: the lid seen early"); the
+// golden outputs' cow region does, and its vector result is resolved: it pays for all three runs
+// (429 → 563 attempts, the same mesh). Such a region runs the semi-implicit scheme first, with at
+// most kSemiFirstAttempts attempts; the whole vector run follows only if that result is not
+// converged and resolved.
+constexpr long long kLidProbeAttempts = 20, kSemiFirstAttempts = 25 * kLidProbeAttempts;
+
+// One run of fairResolved from the input: its mesh, selection, report and resolution.
+struct RegionRun {
+  TriMesh mesh;
+  std::vector<std::uint8_t> selection;
+  FlowReport report;
+  RegionResolution resolution;
+  bool ran = false;
+};
+
+// fairGuarded from `mesh` and `selection` (copied) with `opt`; a diverged run counts as unchanged.
+RegionRun runFrom(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
+  RegionRun run{mesh, selection, {}, {}, true};
+  try {
+    run.report = fairGuarded(run.mesh, run.selection, opt);
+  } catch (const FlowDivergedError&) {
+    run.mesh = mesh, run.selection = selection;
+    run.report.stop = StopReason::Unchanged;
+  }
+  run.resolution = measureRegionResolution(run.mesh, run.selection, opt);
+  return run;
+}
 
 // fairGuarded with Scheme::Automatic (the vector scheme), and if its result does not resolve the
 // region (region_resolution.h: a faceted lid), the semi-implicit scheme from the same input too,
@@ -326,48 +358,71 @@ constexpr long long kSecondRunAttempts = 2;
 // Neither is better everywhere: on lion-head's recipe regions the vector scheme's lids cost up to
 // twice the semi-implicit result, and where it does not facet it ends lower (docs/benchmarks.md,
 // "Regions: resolved"). The second run may take kSecondRunAttempts times the first run's
-// attempts, within the user's limits. A result that is still not resolved does not say
-// converged: it says stalled.
+// attempts, within the user's limits. A region whose probe (kLidProbeAttempts) is already a lid
+// runs the semi-implicit scheme first, and keeps its result if it converged resolved. Every
+// attempt, the probe's too, counts against the user's limits and in the report. A result that is
+// still not resolved does not say converged: it says stalled.
 FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
   if (!checksResolution(opt)) return fairGuarded(mesh, selection, opt);
-  const TriMesh input = mesh;
-  const std::vector<std::uint8_t> inputSelection = selection;
-  FlowReport report = fairGuarded(mesh, selection, opt);
-  RegionResolution resolution = measureRegionResolution(mesh, selection, opt);
-  FlowOptions second = opt;
-  second.scheme = Scheme::SemiImplicit;
-  const long long stepsLeft = opt.maxSteps - std::min(opt.maxSteps, report.steps);
-  second.maxSteps = std::min(stepsLeft, std::max(kSecondRunAttempts * report.steps, 1LL));
-  if (opt.maxSeconds > 0) second.maxSeconds = opt.maxSeconds - report.seconds;
-  const bool timeLeft = !(opt.maxSeconds > 0) || second.maxSeconds > 0;
-  if (!resolution.resolved() && !stoppedAtALimit(report.stop) && second.maxSteps > 0 && timeLeft) {
-    TriMesh other = input;
-    std::vector<std::uint8_t> otherSelection = inputSelection;
-    FlowReport otherReport;
-    try {
-      otherReport = fairGuarded(other, otherSelection, second);
-    } catch (const FlowDivergedError&) {
-      otherReport.stop = StopReason::Unchanged;  // the first run's result stands
+  long long steps = 0, rejected = 0;
+  double seconds = 0;
+  auto spend = [&](const FlowReport& r) { steps += r.steps, rejected += r.rejectedSteps, seconds += r.seconds; };
+  // The options of a run from here: the user's limits less what the runs so far spent.
+  auto remaining = [&](Scheme scheme, long long cap) {
+    FlowOptions o = opt;
+    o.scheme = scheme;
+    o.maxSteps = std::min(opt.maxSteps - std::min(opt.maxSteps, steps), cap);
+    if (opt.maxSeconds > 0) o.maxSeconds = opt.maxSeconds - seconds;
+    return o;
+  };
+  auto canRun = [&](const FlowOptions& o) { return o.maxSteps > 0 && (!(opt.maxSeconds > 0) || o.maxSeconds > 0); };
+  const auto converged = [](const RegionRun& r) { return r.report.stop == StopReason::Converged && r.resolution.resolved(); };
+  RegionRun probe, vector, semi;
+  // Only where the user's step limit leaves the probe and the semi-implicit run room beside the
+  // whole vector run: under a tighter one they would take the attempts it needs.
+  if (opt.maxSteps > 4 * (kLidProbeAttempts + kSemiFirstAttempts)) {
+    probe = runFrom(mesh, selection, remaining(Scheme::Automatic, kLidProbeAttempts));
+    spend(probe.report);
+    // A probe that stopped before its attempts ran out is the whole vector run (the same run).
+    if (probe.report.stop != StopReason::MaxSteps) std::swap(vector, probe);
+    else if (!probe.resolution.resolved() && canRun(remaining(Scheme::SemiImplicit, kSemiFirstAttempts))) {
+      semi = runFrom(mesh, selection, remaining(Scheme::SemiImplicit, kSemiFirstAttempts));
+      spend(semi.report);
     }
-    const RegionResolution otherResolution = measureRegionResolution(other, otherSelection, second);
-    const long long steps = report.steps + otherReport.steps, rejected = report.rejectedSteps + otherReport.rejectedSteps;
-    const double seconds = report.seconds + otherReport.seconds;
-    if (otherReport.stop != StopReason::Unchanged &&
-        (report.stop == StopReason::Unchanged || otherResolution.resolvedEnergy() < resolution.resolvedEnergy())) {
-      mesh = std::move(other);
-      selection = std::move(otherSelection);
-      report = std::move(otherReport);
-      resolution = otherResolution;
-      // The attempts it ran out of were this function's, not the user's: it did not get there.
-      if (report.stop == StopReason::MaxSteps && second.maxSteps < stepsLeft) report.stop = StopReason::Stalled;
-    }
-    report.steps = steps;
-    report.rejectedSteps = rejected;
-    report.seconds = seconds;
-    report.regionRuns = 2;
   }
-  report.regionResolutionGap = resolution.gap();
-  if (!resolution.resolved() && (report.stop == StopReason::Converged || report.stop == StopReason::SelfContact))
+  const FlowOptions whole = remaining(Scheme::Automatic, opt.maxSteps);
+  if (!vector.ran && !(semi.ran && converged(semi)) && canRun(whole)) {
+    vector = runFrom(mesh, selection, whole);
+    spend(vector.report);
+  }
+  if (vector.ran && !semi.ran && !vector.resolution.resolved() && !stoppedAtALimit(vector.report.stop)) {
+    const FlowOptions second = remaining(Scheme::SemiImplicit, std::max(kSecondRunAttempts * vector.report.steps, 1LL));
+    if (canRun(second)) {
+      semi = runFrom(mesh, selection, second);
+      spend(semi.report);
+    }
+  }
+  // The semi-implicit result comes back if it is the only one, or changed the region and costs
+  // less (or the vector run changed nothing).
+  const bool takeSemi = semi.ran && semi.report.stop != StopReason::Unchanged &&
+                        (!vector.ran || vector.report.stop == StopReason::Unchanged ||
+                         semi.resolution.resolvedEnergy() < vector.resolution.resolvedEnergy());
+  // Neither changed the region nor the vector scheme ran (the user's time limit): the probe's result.
+  RegionRun& chosen = takeSemi ? semi : vector.ran ? vector : probe.ran ? probe : semi;
+  const bool probeCameBack = &chosen == &probe;
+  const int runs = int(probe.ran || vector.ran) + int(semi.ran);  // the schemes that ran
+  mesh = std::move(chosen.mesh);
+  selection = std::move(chosen.selection);
+  FlowReport report = std::move(chosen.report);
+  // The attempts a semi-implicit run ran out of were this function's, not the user's.
+  if (takeSemi && report.stop == StopReason::MaxSteps && steps < opt.maxSteps) report.stop = StopReason::Stalled;
+  if (probeCameBack && report.stop == StopReason::MaxSteps && steps < opt.maxSteps) report.stop = StopReason::MaxSeconds;
+  report.steps = steps;
+  report.rejectedSteps = rejected;
+  report.seconds = seconds;
+  report.regionRuns = runs;
+  report.regionResolutionGap = chosen.resolution.gap();
+  if (!chosen.resolution.resolved() && (report.stop == StopReason::Converged || report.stop == StopReason::SelfContact))
     report.stop = StopReason::Stalled;
   return report;
 }
