@@ -338,12 +338,15 @@ struct RegionRun {
   bool ran = false;
 };
 
-// fairGuarded from `mesh` and `selection` (copied) with `opt`; a diverged run counts as unchanged.
+// fairGuarded from `mesh` and `selection` (copied) with `opt`. A semi-implicit run that diverges
+// counts as unchanged (the vector scheme's result stands); the vector scheme's divergence is the
+// caller's FlowDivergedError, as a run of fairGuarded alone.
 RegionRun runFrom(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
   RegionRun run{mesh, selection, {}, {}, true};
   try {
     run.report = fairGuarded(run.mesh, run.selection, opt);
   } catch (const FlowDivergedError&) {
+    if (opt.scheme != Scheme::SemiImplicit) throw;
     run.mesh = mesh, run.selection = selection;
     run.report.stop = StopReason::Unchanged;
   }
