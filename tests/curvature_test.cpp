@@ -246,6 +246,30 @@ TEST(Curvature, MeasuredInPiecesAsWhole) {
   }
 }
 
+// The input check's counts come from the pieces as a whole Topology counts them: edges whose two
+// faces disagree on orientation (a block of a grid flipped) and vertices with two fans (a
+// triangle hung on an interior vertex), each counted once though pieces overlap.
+TEST(Curvature, DefectsCountedInPiecesAsWhole) {
+  TriMesh m = shapes::grid(20, 30);
+  for (int f = 100; f < 160; ++f) std::swap(m.faces[f][1], m.faces[f][2]);
+  for (int v : {45, 300, 500}) {
+    const int a = m.vertexCount();
+    m.positions.push_back(m.positions[v] + Vec3(0, 0, 1));
+    m.positions.push_back(m.positions[v] + Vec3(0.1, 0, 1));
+    m.faces.push_back({v, a, a + 1});
+  }
+  const Topology whole(m.vertexCount(), m.faces);
+  ASSERT_GT(whole.inconsistentEdgeCount(), 0);
+  ASSERT_EQ(whole.nonManifoldVertexCount(), 3);
+  for (int piece : {97, 500, 1 << 20}) {
+    MeshDefects d;
+    const MeshCurvature parts = measureCurvatureInPieces(m, {}, piece, &d);
+    EXPECT_EQ(d.inconsistentEdges, whole.inconsistentEdgeCount()) << piece;
+    EXPECT_EQ(d.nonManifoldVertices, 3) << piece;
+    EXPECT_NEAR(parts.energy, measureCurvature(m).energy, 1e-12 * std::max(1.0, std::abs(parts.energy))) << piece;
+  }
+}
+
 // A mesh changed in one place has its energy change measured there only (a region's report): the
 // same as the difference of two whole measures, to rounding, whether vertices moved, a face went
 // (every later face shifts down one index, and a hole opens a boundary), an edge flipped, the

@@ -107,6 +107,36 @@ Topology checkedTopology(const TriMesh& mesh, bool rejectNonManifoldVertices, Re
   return topo;
 }
 
+namespace {
+
+// The vertices of a piece when a region's run checks and measures the whole mesh: small pieces
+// keep their arrays in the cache (on a 416k-vertex scan 4,096 vertices took 0.52–0.60 s, 32,768
+// 0.82–0.96 s, 131,072 1.31–1.42 s), but each piece scans every face, so at most kCheckPieces.
+constexpr int kCheckPieceVertices = 1 << 12, kCheckPieces = 64;
+
+// checkedTopology's checks (rejecting non-manifold vertices) and the whole mesh's energy. A
+// region's run does both a piece at a time (measureCurvatureInPieces), building no whole-mesh
+// Topology or Geometry: for a 1,000-face region of a 416k-vertex scan those were about 0.9 s of a
+// 1.3 s run, much of it page faults of their fresh arrays (docs/benchmarks.md, "Regions: the
+// whole mesh's share"). A piece that throws is checked again whole, for the mesh's own numbers.
+double checkedEnergy(const TriMesh& mesh, const CurvatureMeasureOptions& measure, RepairHints hints, bool inPieces) {
+  if (!inPieces) return measureCurvature(checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, hints), mesh, measure).energy;
+  if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");
+  MeshDefects defects;
+  double energy = 0;
+  try {
+    const int pieceVertices = std::max(kCheckPieceVertices, mesh.vertexCount() / kCheckPieces + 1);
+    energy = measureCurvatureInPieces(mesh, measure, pieceVertices, &defects).energy;
+  } catch (const InvalidInputError&) {
+    checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, hints);
+    throw;
+  }
+  rejectDefects(defects.inconsistentEdges, defects.nonManifoldVertices, hints);
+  return energy;
+}
+
+}  // namespace
+
 void checkFillInput(const TriMesh& mesh, RepairHints hints) {
   if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");
   const FillInputDefects d = countFillInputDefects(mesh);
@@ -136,7 +166,7 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   job.flow = opt;
   checkOptions(FilterId::Fairing, job);
   const CurvatureMeasureOptions measure{opt.area, opt.curvature};
-  r.meshEnergyBefore = measureCurvature(checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, hints), mesh, measure).energy;
+  r.meshEnergyBefore = checkedEnergy(mesh, measure, hints, /*inPieces=*/region.has_value());
   if (region && region->faces.empty()) throw InvalidInputError("the region to fair has no faces");
   const bool selected = region.has_value();
   const TriMesh input = mesh;

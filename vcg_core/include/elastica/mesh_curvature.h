@@ -56,6 +56,14 @@ MeshCurvature measureCurvature(const Topology& topo, const TriMesh& mesh, const 
 /// @throws InvalidInputError as measureCurvature().
 double curvatureEnergyChange(const TriMesh& before, const TriMesh& after, const CurvatureMeasureOptions& opt = {});
 
+/// What an input check rejects beyond Topology's throws, as Topology counts them:
+/// measureCurvatureInPieces() counts them on the way (each edge and vertex in one piece), so an
+/// input check and a whole-mesh energy need no whole-mesh Topology.
+struct MeshDefects {
+  int inconsistentEdges = 0;    ///< Topology::inconsistentEdgeCount()
+  int nonManifoldVertices = 0;  ///< Topology::nonManifoldVertexCount()
+};
+
 /// measureCurvature() a piece at a time, for large meshes: the vertices in blocks of
 /// `pieceVertices`, each measured on the faces around it, so that the memory beyond the mesh and
 /// the result follows a piece, not the mesh (a whole-mesh Topology, Geometry and Curvature of a
@@ -66,9 +74,10 @@ double curvatureEnergyChange(const TriMesh& before, const TriMesh& after, const 
 /// counts count each edge and face once (degenerate at the piece's mean edge length). The paper's λ
 /// rule (opt.curvature.h2k = PaperLambda) needs the whole mesh, and a mesh of at most
 /// `pieceVertices` vertices is one piece: both are measureCurvature().
+/// With `defects`, also counts them (as Topology, whole, would).
 /// @throws InvalidInputError as measureCurvature() (a face that repeats a vertex or a non-manifold
 ///         edge is named in the piece's numbers).
 MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasureOptions& opt = {},
-                                       int pieceVertices = 1 << 17);
+                                       int pieceVertices = 1 << 17, MeshDefects* defects = nullptr);
 
 }  // namespace elastica

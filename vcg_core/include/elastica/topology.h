@@ -67,7 +67,11 @@ class Topology {
   /// Vertices whose incident faces form more than one fan (non-manifold "bow-tie" vertices).
   /// Counted on each call, in linear time: only input checks ask, and the flows, which rebuild the
   /// topology at every connectivity change, would otherwise pay for it at each build.
-  int nonManifoldVertexCount() const;
+  /// With `only` (one flag per vertex), the flagged vertices alone are counted: a piece of a mesh
+  /// that holds their whole fans but not every other vertex's.
+  int nonManifoldVertexCount(const std::vector<std::uint8_t>* only = nullptr) const;
+  /// Interior edge e's two faces traverse it in the same direction (counted in inconsistentEdgeCount()).
+  bool isInconsistentEdge(int e) const;
   /// Bytes of the adjacency arrays (faces, edges, rings, corners, boundary flags).
   std::size_t byteSize() const;
 

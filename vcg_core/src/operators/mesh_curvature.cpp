@@ -38,9 +38,15 @@ MeshCurvature measureCurvature(const Topology& topo, const TriMesh& mesh, const 
 
 namespace elastica {
 
-MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasureOptions& opt, int pieceVertices) {
+MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasureOptions& opt, int pieceVertices,
+                                       MeshDefects* defects) {
   const int nv = mesh.vertexCount();
-  if (opt.curvature.h2k == H2KTreatment::PaperLambda || nv <= pieceVertices) return measureCurvature(mesh, opt);
+  if (opt.curvature.h2k == H2KTreatment::PaperLambda || nv <= pieceVertices) {
+    const Topology whole(nv, mesh.faces);
+    if (defects) *defects = {whole.inconsistentEdgeCount(), whole.nonManifoldVertexCount()};
+    return measureCurvature(whole, mesh, opt);
+  }
+  if (defects) *defects = {};
   MeshCurvature out;
   out.H.assign(nv, 0.0);
   out.K.assign(nv, 0.0);
@@ -96,6 +102,7 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
     for (std::size_t i = 0; i < global.size(); ++i) own[i] = owned(global[i]);
 
     topo.rebuild(piece.vertexCount(), piece.faces);
+    if (defects) defects->nonManifoldVertices += topo.nonManifoldVertexCount(&own);
     // Only the own vertices' areas, normals and angle sums are read: the others are in the
     // piece for their positions (on the 2.6 M-vertex icosphere, 786,360 of the first piece's
     // 917,492 vertices; about 47,000 of 178,000 in the later ones).
@@ -116,6 +123,7 @@ MeshCurvature measureCurvatureInPieces(const TriMesh& mesh, const CurvatureMeasu
       if (!owned(std::min(global[ev[0]], global[ev[1]]))) continue;
       ++edges;
       out.boundaryEdges += topo.isBoundaryEdge(e);
+      if (defects) defects->inconsistentEdges += topo.isInconsistentEdge(e);
       out.degenerate.zeroLengthEdges += geo.edgeLength[e] <= lengthFloor;
     }
     for (int f = 0; f < topo.faceCount(); ++f) {

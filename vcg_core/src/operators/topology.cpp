@@ -161,15 +161,23 @@ void Topology::build(int vertexCount, const std::vector<Face>& faces) {
   }
 }
 
-int Topology::nonManifoldVertexCount() const {
+int Topology::nonManifoldVertexCount(const std::vector<std::uint8_t>* only) const {
   int count = 0;
   std::vector<int> fan;
   FanScratch scratch;
   for (int v = 0; v < nv_; ++v) {
+    if (only && !(*only)[v]) continue;
     const VertexFaces::CornerRange corners = corners_.corners(v);
     if (corners.size() >= 2 && fansAt(faces_, corners.begin(), corners.size(), fan, scratch) > 1) ++count;
   }
   return count;
+}
+
+bool Topology::isInconsistentEdge(int e) const {
+  const int c0 = edgeCorners_[e][0], c1 = edgeCorners_[e][1], lo = edgeVertices_[e][0];
+  if (c1 < 0) return false;
+  // As build() counts it: each face traverses the edge from the vertex after the opposite corner.
+  return (faces_[c0 / 3][(c0 % 3 + 1) % 3] == lo) == (faces_[c1 / 3][(c1 % 3 + 1) % 3] == lo);
 }
 
 std::size_t Topology::byteSize() const {
