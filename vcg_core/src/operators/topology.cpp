@@ -130,9 +130,7 @@ void Topology::build(int vertexCount, const std::vector<Face>& faces) {
         const int c0 = spokeCorner(spokes[i]), c1 = spokeCorner(spokes[i + 1]);
         edgeCorners_.back()[0] = c0;
         edgeCorners_.back()[1] = c1;
-        // Each face traverses the edge from the vertex after the opposite corner.
-        const bool forward0 = faces[c0 / 3][(c0 % 3 + 1) % 3] == lo, forward1 = faces[c1 / 3][(c1 % 3 + 1) % 3] == lo;
-        if (forward0 == forward1) ++inconsistentEdges_;
+        if (isInconsistentEdge(edgeCount() - 1)) ++inconsistentEdges_;
       } else {
         edgeCorners_.back()[0] = spokeCorner(spokes[i]);
         edgeCorners_.back()[1] = -1;
@@ -176,7 +174,7 @@ int Topology::nonManifoldVertexCount(const std::vector<std::uint8_t>* only) cons
 bool Topology::isInconsistentEdge(int e) const {
   const int c0 = edgeCorners_[e][0], c1 = edgeCorners_[e][1], lo = edgeVertices_[e][0];
   if (c1 < 0) return false;
-  // As build() counts it: each face traverses the edge from the vertex after the opposite corner.
+  // Each face traverses the edge from the vertex after the opposite corner.
   return (faces_[c0 / 3][(c0 % 3 + 1) % 3] == lo) == (faces_[c1 / 3][(c1 % 3 + 1) % 3] == lo);
 }
 
