@@ -63,10 +63,11 @@ for mesh in "${meshes[@]}"; do
       sum=$(awk '{print $1 + $2}' <<<"$d")
       if awk "BEGIN {exit !($sum < $bestSum)}"; then best=$s bestSum=$sum; fi
     done
-    for f in 0.01 0.015 0.02 0.03 0.04; do
-      out=$("$bin/elastica" fair "$noisy" -o "$tmp/e$f.ply" --feature-size "$f" --max-seconds 60)
+    diagonal=$("$bin/mesh_distance" "$mesh" "$mesh" | /usr/bin/python3 -c 'import json, sys; print(json.load(sys.stdin)["diagonal"])')
+    for f in 0.01 0.015 0.02 0.03 0.04; do  # fractions of the diagonal; --feature-size takes the length
+      out=$("$bin/elastica" fair "$noisy" -o "$tmp/e$f.ply" --feature-size "$(awk "BEGIN {print $f * $diagonal}")" --max-seconds 60)
       steps=$(sed -n 's/.*: \([0-9]*\) steps in \([0-9.]*\) s (\([a-z_]*\)).*/\1 attempts, \2 s, \3/p' <<<"$out")
-      row "elastica --feature-size $f" "$tmp/e$f.ply" "$steps"
+      row "elastica --feature-size $f × diagonal" "$tmp/e$f.ply" "$steps"
     done
     if [[ -n $pictures && $first == 1 ]]; then
       mkdir -p "$pictures"

@@ -33,9 +33,7 @@ void runFair(FairArgs& a) {
   const io::ReadReport& read = file.report;
   TriMesh input = std::move(file.mesh);
   const int inVertices = input.vertexCount(), inFaces = input.faceCount();
-  // --feature-size is a fraction of the bounding-box diagonal.
-  app::JobOptions job =
-      app::readJob(app::filterSpec(app::FilterId::Fairing, {}), a.given, app::Caller::Cli, boundingBoxDiagonal(input.positions));
+  app::JobOptions job = app::readJob(app::filterSpec(app::FilterId::Fairing, {}), a.given, app::Caller::Cli);
   FlowOptions& flow = job.flow;
 
   std::optional<FaceSet> region;
@@ -102,7 +100,7 @@ void runFair(FairArgs& a) {
                 report.regionEnergyBefore, report.regionEnergyAfter);
   std::printf("mesh energy %.9g -> %.9g (the whole mesh)\n", result.meshEnergyBefore, result.meshEnergyAfter);
   if (!result.flowEnergyLine.empty()) std::printf("%s\n", result.flowEnergyLine.c_str());
-  for (const std::string* line : {&result.resolutionLine, &result.amountLine, &result.movedLine})
+  for (const std::string* line : {&result.resolutionLine, &result.amountLine, &result.roughLine, &result.movedLine})
     if (!line->empty()) std::printf("%s\n", line->c_str());
   std::printf("wrote %s\n", a.output.c_str());
 

@@ -10,16 +10,21 @@ namespace elastica::cli {
 namespace {
 
 // The row's range as a CLI11 check, described as the help shows it ("in 0..8", ">= 0", "> 0").
-// A fraction of the diagonal (AbsPerc) is in 0..1 here.
+// A length (AbsPerc) also takes "auto" (its default).
 CLI::Validator range(const app::ParamSpec& p) {
   const double lo = p.minValue;
-  const double hi = p.type == app::ParamType::AbsPerc ? 1.0 : p.maxValue;
+  const double hi = p.maxValue;
+  const bool length = p.type == app::ParamType::AbsPerc;
   const bool open = p.minExclusive;
   auto str = [](double x) { return CLI::detail::to_string(x); };
   const std::string text = hi < std::numeric_limits<double>::infinity() ? "in " + str(lo) + ".." + str(hi)
                                                                         : (open ? "> " : ">= ") + str(lo);
   return CLI::Validator(
       [=](std::string& s) -> std::string {
+        if (length && s == "auto") {
+          s = CLI::detail::to_string(app::kAutoFeatureSize);
+          return {};
+        }
         double x = 0;
         if (!CLI::detail::lexical_cast(s, x) || !((open ? x > lo : x >= lo) && x <= hi)) return "Value " + s + " is not " + text;
         return {};
@@ -61,7 +66,7 @@ void addTableOptions(CLI::App& cmd, app::FilterId filter, app::ParamValues& give
       case app::ParamType::AbsPerc: {
         CLI::Option* o =
             cmd.add_option_function<double>(names, [values, key](const double& x) { values->set(key, x); }, help)
-                ->check(range(p));
+                ->transform(range(p));  // may turn "auto" into its number
         if (p.type == app::ParamType::AbsPerc && core == app::kAutoFeatureSize) o->default_str("auto");
         else if (core != 0) o->default_str(CLI::detail::to_string(core));
         break;

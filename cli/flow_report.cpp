@@ -27,8 +27,13 @@ std::function<bool(const FlowProgress&)> terminalProgress(const std::string& lab
   const bool tty = isatty(STDERR_FILENO);
   return [tty, always, label](const FlowProgress& p) {
     if (tty || always) {
-      std::fprintf(stderr, "%s%s: level %d  step %lld  E %.6g  lambda %.3g  %.1f s%s", tty ? "\r" : "", label.c_str(),
-                   p.level, p.step, p.energy, p.lambda, p.seconds, tty ? "   " : "\n");
+      // The energy of the mesh the flow works on (refined or remeshed, or a region with its fixed
+      // rings): it may differ from the whole mesh's the summary states. The paper's lambda only
+      // where it applies.
+      char lambda[48] = "";
+      if (p.lambda < 1) std::snprintf(lambda, sizeof lambda, "  paper's lambda %.3g", p.lambda);
+      std::fprintf(stderr, "%s%s: level %d  step %lld  flow energy %.6g%s  %.1f s%s", tty ? "\r" : "", label.c_str(),
+                   p.level, p.step, p.energy, lambda, p.seconds, tty ? "   " : "\n");
       std::fflush(stderr);
       gLineDrawn = tty;
     }

@@ -1,6 +1,9 @@
 #include "help_format.h"
 
+#include <algorithm>
 #include <regex>
+#include <string>
+#include <vector>
 
 namespace elastica::cli {
 namespace {
@@ -31,6 +34,45 @@ std::string readableParseError(const std::string& what) {
   std::string words = enumWords("ENUM:" + m[2].str());
   words = std::regex_replace(words.substr(1, words.size() - 2), std::regex("\\|"), ", ");
   return m.prefix().str() + "'" + m[1].str() + "' is not one of " + words + m.suffix().str();
+}
+
+namespace {
+
+// The edit distance (insertions, deletions, substitutions) between two words.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+std::string optionSuggestion(const CLI::App& app, const std::vector<std::string>& unexpected) {
+  std::vector<const CLI::App*> commands = {&app};
+  for (const CLI::App* sub : app.get_subcommands()) commands.push_back(sub);
+  for (const std::string& arg : unexpected) {
+    if (arg.rfind("--", 0) != 0) continue;
+    const std::string word = arg.substr(0, arg.find('='));
+    std::string best;
+    std::size_t bestDistance = std::max<std::size_t>(3, word.size() / 4) + 1;  // a typo, not another word
+    for (const CLI::App* command : commands)
+      for (const CLI::Option* o : command->get_options())
+        for (const std::string& name : o->get_lnames()) {
+          const std::size_t d = editDistance(word, "--" + name);
+          if (d < bestDistance) bestDistance = d, best = "--" + name;
+        }
+    if (!best.empty()) return " (did you mean " + best + "?)";
+  }
+  return {};
 }
 
 std::string HelpFormatter::make_option_name(const CLI::Option* opt, bool positional) const {

@@ -18,4 +18,8 @@ class HelpFormatter : public CLI::Formatter {
 /// elastica, lmc" rather than the transformer's "Check bogus value in {bilaplacian->2,...} FAILED".
 std::string readableParseError(const std::string& what);
 
+/// For an argument `app` did not expect that looks like an option ("--featur-size"), the option of
+/// the chosen command it most likely means (" (did you mean --feature-size?)"), else "".
+std::string optionSuggestion(const CLI::App& app, const std::vector<std::string>& unexpected);
+
 }  // namespace elastica::cli

@@ -28,6 +28,13 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);  // runs the chosen subcommand's callback
   } catch (const CLI::Success& e) {  // --help, --version
     return app.exit(e);
+  } catch (const CLI::ExtrasError& e) {
+    std::vector<std::string> extras = app.remaining();
+    for (const CLI::App* sub : app.get_subcommands())
+      for (const std::string& r : sub->remaining()) extras.push_back(r);
+    std::cerr << "elastica: " << e.what() << elastica::cli::optionSuggestion(app, extras)
+              << "\n(run 'elastica --help' or 'elastica COMMAND --help')\n";
+    return 2;
   } catch (const CLI::ParseError& e) {
     std::cerr << "elastica: " << elastica::cli::readableParseError(e.what()) << "\n(run 'elastica --help' or 'elastica COMMAND --help')\n";
     return 2;

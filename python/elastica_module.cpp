@@ -296,8 +296,7 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
   const app::ParamValues values = keywordValues("fair", spec, kwargs, {"progress"});
   TriMesh mesh = toMesh(V, F);
   std::optional<FaceSet> region = selectionFrom(selectedFaces, mesh.faceCount());
-  // feature_size is a fraction of the bounding-box diagonal.
-  FlowOptions opt = app::readJob(spec, values, app::Caller::Python, boundingBoxDiagonal(mesh.positions)).flow;
+  FlowOptions opt = app::readJob(spec, values, app::Caller::Python).flow;
   PythonProgress hook{extraKeyword(kwargs, "progress"), nullptr};
   opt.progress = hook.hook();
   const int inV = mesh.vertexCount(), inF = mesh.faceCount();
@@ -311,8 +310,13 @@ py::tuple fairArrays(const py::object& V, const py::object& F, const py::object&
 double autoFeatureSizeArrays(const py::object& V, const py::object& F, const py::object& selectedFaces) {
   const TriMesh mesh = toMesh(V, F);
   const std::optional<FaceSet> region = selectionFrom(selectedFaces, mesh.faceCount());
-  const double diagonal = boundingBoxDiagonal(mesh.positions);
-  return diagonal > 0 ? app::autoFeatureSize(mesh, region ? &*region : nullptr) / diagonal : 0.0;
+  return app::autoFeatureSize(mesh, region ? &*region : nullptr);
+}
+
+double roughnessArrays(const py::object& V, const py::object& F, const py::object& selectedFaces) {
+  const TriMesh mesh = toMesh(V, F);
+  const std::optional<FaceSet> region = selectionFrom(selectedFaces, mesh.faceCount());
+  return app::surfaceRoughness(mesh, region ? &*region : nullptr);
 }
 
 py::tuple fillArrays(const py::object& V, const py::object& F, const py::kwargs& kwargs) {
@@ -349,16 +353,40 @@ py::dict curvatureArrays(const py::object& V, const py::object& F, const py::kwa
 // A str or os.PathLike (pathlib.Path) as a file name.
 std::string pathOf(const py::object& path) { return py::module_::import("os").attr("fspath")(path).cast<std::string>(); }
 
-py::tuple readFile(const py::object& pathLike) {
+py::tuple readFile(const py::object& pathLike, bool selection) {
   const std::string path = pathOf(pathLike);
-  const TriMesh mesh = io::readMesh(path).mesh;  // the CLI's reader: its checks, repairs and messages
-  return py::make_tuple(vertexArray(mesh), faceArray(mesh));
+  const io::MeshFile file = io::readMesh(path);  // the CLI's reader: its checks, repairs and messages
+  const TriMesh& mesh = file.mesh;
+  if (!selection) return py::make_tuple(vertexArray(mesh), faceArray(mesh));
+  // MeshLab's face selection (PLY face flags); no flags in the file: nothing selected.
+  py::array_t<bool> selected(static_cast<py::ssize_t>(mesh.faceCount()));
+  for (int f = 0; f < mesh.faceCount(); ++f)
+    selected.mutable_data()[f] = file.report.hasFaceSelection && file.faceSelection[static_cast<std::size_t>(f)] != 0;
+  return py::make_tuple(vertexArray(mesh), faceArray(mesh), selected);
 }
 
-void writeFile(const py::object& pathLike, const py::object& V, const py::object& F, bool ascii) {
+void writeFile(const py::object& pathLike, const py::object& V, const py::object& F, bool ascii,
+               const py::object& selectedFaces) {
   const std::string path = pathOf(pathLike);
   const TriMesh mesh = toMesh(V, F);
-  io::writeMesh(path, mesh, {}, !ascii);  // by extension; atomic: a failed write leaves no half-written file
+  io::PlyAttributes attributes;
+  std::vector<int> flags;
+  if (!selectedFaces.is_none()) {
+    if (io::formatFromExtension(path) != io::MeshFormat::Ply)
+      throw InvalidInputError("selected_faces: only a .ply file stores a face selection, not " + path);
+    flags.assign(static_cast<std::size_t>(mesh.faceCount()), 0);
+    // No face selected (an all-False mask, no indices) is a selection too, as MeshLab saves one.
+    const py::array given = py::array::ensure(selectedFaces);
+    const bool none = given && (given.size() == 0 || (given.dtype().kind() == 'b' && !py::bool_(given.attr("any")())));
+    if (none && given.dtype().kind() == 'b' && given.size() != mesh.faceCount())
+      throw InvalidInputError("a bool selected_faces needs one entry per face (" + std::to_string(mesh.faceCount()) + ")");
+    if (!none) {
+      const std::optional<FaceSet> region = selectionFrom(selectedFaces, mesh.faceCount());
+      for (int f : region->faces) flags[static_cast<std::size_t>(f)] = io::kPlyFaceSelected;
+    }
+    attributes.faceFlags = &flags;
+  }
+  io::writeMesh(path, mesh, attributes, !ascii);  // by extension; atomic: a failed write leaves no half-written file
 }
 
 // ---- the options table, for faces that build dialogs (the Blender add-on) ----------------------
@@ -367,11 +395,7 @@ py::dict filterSpecs() {
   static const std::map<app::FilterId, const char*> function = {
       {app::FilterId::Fairing, "fair"}, {app::FilterId::FillHoles, "fill_holes"}, {app::FilterId::Curvature, "curvature"}};
   py::dict all;
-  // A diagonal of 1 makes a RichAbsPerc's default its fraction of the diagonal, which is what
-  // Python takes (feature_size=0.03).
-  app::MeshFacts unitDiagonal;
-  unitDiagonal.diagonal = 1;
-  for (const app::FilterSpec& f : app::allFilters(unitDiagonal)) {
+  for (const app::FilterSpec& f : app::allFilters({})) {
     py::list params;
     auto orNone = [](const std::string& s) { return s.empty() ? py::object(py::none()) : py::object(py::str(s)); };
     for (const app::ParamSpec& p : f.params) {
@@ -397,12 +421,12 @@ py::dict filterSpecs() {
           d["type"] = "float";
           d["default"] = p.inMeshLab() ? typedDecimal(p.defaultValue) : p.defaultValue;
           break;
-        case app::ParamType::AbsPerc:  // a fraction of the bounding-box diagonal here
+        case app::ParamType::AbsPerc:  // a length in the mesh's units, as on every face
           d["type"] = "float";
+          d["unit"] = "length";
           // None: sized from the mesh at hand (auto_feature_size), as the MeshLab dialog does.
           d["default"] = p.get(app::JobOptions{}) == app::kAutoFeatureSize ? py::object(py::none())
                                                                             : py::object(py::float_(typedDecimal(p.defaultValue)));
-          d["description"] = p.tooltip + " A fraction of the bounding-box diagonal.";
           break;
         case app::ParamType::Enum:
           d["type"] = "enum";
@@ -419,7 +443,7 @@ py::dict filterSpecs() {
       }
       if (p.type == app::ParamType::AbsPerc) {
         d["min"] = 0.0;
-        d["max"] = 1.0;
+        d["max"] = py::none();
       }
       params.append(d);
     }
@@ -479,9 +503,11 @@ PYBIND11_MODULE(elastica, m) {
          "Fairs the mesh with a curvature flow, as `elastica fair`: flow 'elastica' (F = -Lap H - 2H(H^2-K)),\n"
          "'lmc' or 'bilaplacian'; scheme 'explicit', 'semi-implicit', 'vector' or 'auto';\n"
          "subdivide: coarse-to-fine 1-to-4 subdivisions (0..8); max_steps and max_seconds 0: no limit;\n"
-         "feature_size: a fairing amount, a fraction of the bounding-box diagonal (bumps smaller than it are\n"
-         "smoothed away, larger shapes kept; report['stop'] 'feature_size'); None (the default): 2 short edge\n"
-         "lengths of the faces to fair (auto_feature_size), halved while it would raise the energy; 0: fair\n"
+         "feature_size: a fairing amount, a length in the mesh's units, as report['feature_size'] holds it (bumps\n"
+         "smaller than it are smoothed away, larger shapes kept; report['stop'] 'feature_size'); None (the\n"
+         "default): sized from the faces to fair by their edge lengths and roughness (auto_feature_size), halved\n"
+         "while it would raise the energy; report['rough'] says when the result is still rough, with\n"
+         "report['suggested_feature_size']; 0: fair\n"
          "until converged, to the limit shape (a sphere, a Clifford torus);\n"
          "boundary 'fixed' (boundary and next row clamped) or 'slide'. remesh (not explicit): the\n"
          "mesh-quality stages (pre-subdivision, isotropic remeshing of the moving region, edge flips, embedding\n"
@@ -494,9 +520,15 @@ PYBIND11_MODULE(elastica, m) {
             .c_str());
   m.def("auto_feature_size", &autoFeatureSizeArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(),
         "auto_feature_size(V, F, selected_faces=None) -> float\n\n"
-        "The fairing amount fair() takes by default (feature_size=None), as a fraction of the bounding-box\n"
-        "diagonal: 2 times the 25 % quantile of the edge lengths of the faces to fair (the selected ones, else\n"
-        "all). What the MeshLab dialog and Blender's redo panel show as the default feature size.");
+        "The fairing amount fair() takes by default (feature_size=None), a length in the mesh's units: the 25 %\n"
+        "quantile of the edge lengths of the faces to fair (the selected ones, else all) times 2 on a clean\n"
+        "surface, more on a rough one. What the MeshLab dialog and Blender's redo panel show as the default\n"
+        "feature size, and report['feature_size'] of a default fair() (unless report['feature_size_halvings']).");
+  m.def("surface_roughness", &roughnessArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(),
+        "surface_roughness(V, F, selected_faces=None) -> float\n\n"
+        "How rough the faces to fair are, as the default amount measures it (report['roughness_before']): the\n"
+        "median over their vertices of the height over the neighbours' centre along the normal, less the\n"
+        "neighbours' mean height, in median edge lengths. Curvature cancels; vertex noise does not.");
   m.def("fill_holes", &fillArrays, py::arg("V"), py::arg("F"),
         (signature("fill_holes", "V, F", app::FilterId::FillHoles, ", progress=None",
                    "(V_out, F_out, new_faces, report)") +
@@ -512,14 +544,17 @@ PYBIND11_MODULE(elastica, m) {
          "fix applies), angle-deficit Gaussian curvature K, and the total curvature energy E = sum (4H^2 - 2K) A,\n"
          "as `elastica curvature`. area: 'mixed' (Meyer et al.) or 'barycentric' (the paper's A/3).")
             .c_str());
-  m.def("read", &readFile, py::arg("path"),
-        "read(path) -> (V, F)\n\nReads PLY, OFF, STL or OBJ with the `elastica` command's reader: polygons split,\n"
-        "STL corners merged, degenerate and duplicate faces removed, bow-tie vertices split; a malformed file\n"
-        "raises elastica.IoError naming what and where.");
+  m.def("read", &readFile, py::arg("path"), py::kw_only(), py::arg("selection") = false,
+        "read(path, *, selection=False) -> (V, F), or (V, F, selected) with selection\n\nReads PLY, OFF, STL or OBJ\n"
+        "with the `elastica` command's reader: polygons split, STL corners merged, degenerate and duplicate faces\n"
+        "removed, bow-tie vertices split; a malformed file raises elastica.IoError naming what and where. With\n"
+        "selection, also a bool mask per face: MeshLab's face selection (a PLY's face flags; all False without).");
   m.def("write", &writeFile, py::arg("path"), py::arg("V"), py::arg("F"), py::kw_only(), py::arg("ascii") = false,
-        "write(path, V, F, *, ascii=False)\n\nWrites the format the extension names (.ply, .off, .obj, .stl; PLY and\n"
-        "STL binary unless ascii) atomically: on failure the destination is left as it was; an unknown extension\n"
-        "raises elastica.IoError.");
+        py::arg("selected_faces") = py::none(),
+        "write(path, V, F, *, ascii=False, selected_faces=None)\n\nWrites the format the extension names (.ply,\n"
+        ".off, .obj, .stl; PLY and STL binary unless ascii) atomically: on failure the destination is left as it\n"
+        "was; an unknown extension raises elastica.IoError. selected_faces (a bool mask per face or face indices,\n"
+        "e.g. fill_holes' new_faces) is stored as MeshLab's face selection (PLY face flags); .ply only.");
   m.def("filters", &filterSpecs,
         "filters() -> {'fair': spec, 'fill_holes': spec, 'curvature': spec}\n\n"
         "The options table, for a face that builds a dialog (the Blender add-on): each spec has the filter's\n"

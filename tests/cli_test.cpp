@@ -2,12 +2,15 @@
 #include "file_helpers.h"
 #include "run_elastica.h"
 #include "shape_measures.h"
+#include "test_meshes.h"
 
 #include <elastica/app/filter_spec.h>
 #include <elastica/curvature.h>
 #include <elastica/energy.h>
 #include <elastica/geometry.h>
 #include <elastica/io/mesh_reader.h>
+#include <elastica/io/mesh_writer.h>
+#include <elastica/topology.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/sign_convention.h>
 #include <elastica/vcg_adapter.h>
@@ -34,6 +37,11 @@ double printedEnergy(const std::string& out) {
   std::smatch m;
   if (!std::regex_search(out, m, std::regex("total curvature energy E = ([-0-9.eE+]+)"))) return NAN;
   return std::stod(m[1]);
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace
@@ -94,7 +102,7 @@ TEST(Cli, DefaultsKeepTheModelOfAScan) {
   EXPECT_NE(limit.output.find("(max_steps)"), std::string::npos) << limit.output;
   EXPECT_EQ(limit.output.find("fairing amount"), std::string::npos) << limit.output;
   // An amount keeps the vertices: subdivision levels asked for beside it are not used, and it says so.
-  const CommandResult levels = runElastica("fair " + bunny + " -o " + dir.file("h.ply") + " --feature-size 0.02 --subdivide 1");
+  const CommandResult levels = runElastica("fair " + bunny + " -o " + dir.file("h.ply") + " --feature-size 0.315 --subdivide 1");
   EXPECT_NE(levels.output.find("the subdivision levels were not used"), std::string::npos) << levels.output;
   EXPECT_EQ(io::readMesh(dir.file("h.ply")).mesh.faces, in.faces);
 }
@@ -111,7 +119,7 @@ TEST(Cli, AnAmountThatRaisesTheEnergy) {
   EXPECT_NE(automatic.output.find("(unchanged)"), std::string::npos) << automatic.output;
   EXPECT_NE(automatic.output.find("auto), halved 4 times"), std::string::npos) << automatic.output;
   EXPECT_EQ(io::readMesh(dir.file("a.ply")).mesh.positions, io::readMesh(dir.file("t.ply")).mesh.positions);
-  const CommandResult chosen = runElastica("fair " + dir.file("t.ply") + " -o " + dir.file("c.ply") + " --feature-size 0.02");
+  const CommandResult chosen = runElastica("fair " + dir.file("t.ply") + " -o " + dir.file("c.ply") + " --feature-size 0.187");  // 2 % of its diagonal
   ASSERT_EQ(chosen.exitCode, 0) << chosen.output;
   EXPECT_NE(chosen.output.find("(feature_size)"), std::string::npos) << chosen.output;
   EXPECT_EQ(chosen.output.find("halved"), std::string::npos) << chosen.output;
@@ -354,26 +362,50 @@ TEST(Cli, MaxSecondsEndsARunThatWouldNotStop) {
   EXPECT_TRUE(std::filesystem::exists(dir.file("f.ply")));
 }
 
-// --feature-size F: a fraction of the bounding-box diagonal, handed to the core as that length; the
-// run stops with its own reason. Out of 0..1 it is refused.
-TEST(Cli, FeatureSizeIsAFractionOfTheDiagonal) {
+// --feature-size is a length in the mesh's units, the quantity the output prints and the report's
+// feature_size holds: on a real scan (CGAL's cow, with 3-D vertex noise of 0.3 edge), the default's
+// printed amount and the report's value, typed back, give the default's output byte for byte.
+// "auto" is the default by name; a length larger than 1 is taken; a negative one is refused.
+TEST(Cli, TheAmountIsOneLengthTypedBackByteForByte) {
   ScratchDir dir("cli-feature-size");
-  ASSERT_EQ(runElastica("generate icosphere --level 3 --noise 0.05 -o " + dir.file("n.ply")).exitCode, 0);
-  const CommandResult run = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("f.ply") +
-                                        " --feature-size 0.05 --report " + dir.file("r.json"));
-  ASSERT_EQ(run.exitCode, 0) << run.output;
-  EXPECT_NE(run.output.find("(feature_size)"), std::string::npos) << run.output;
-  VcgMesh vm;
-  io::readMesh(dir.file("n.ply"), vm);
-  const double diagonal = boundingBoxDiagonal(toTriMesh(vm).positions);
+  TriMesh cow = io::readMesh(std::string(ELASTICA_SAMPLE_MESH_DIR) + "/cow.off").mesh;
+  cow = test::ballJittered(std::move(cow), 0.3 * meanEdgeLength(Topology(cow.vertexCount(), cow.faces), cow.positions), 1);
+  io::writePly(dir.file("n.ply"), cow, {}, true);
+  auto fair = [&](const std::string& out, const std::string& options) {
+    const CommandResult r = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file(out) + " " + options);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return r.output;
+  };
+  const std::string automatic = fair("a.ply", "--report " + dir.file("r.json"));
+  std::smatch printed, reported, percent;
+  ASSERT_TRUE(std::regex_search(automatic, printed, std::regex("feature size ([0-9.e+-]+) \\(([0-9.e+-]+) % of the bounding-box diagonal, [0-9.]+ mean edge lengths, auto\\)"))) << automatic;
   std::ifstream in(dir.file("r.json"));
   const std::string json((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::smatch m;
-  ASSERT_TRUE(std::regex_search(json, m, std::regex("\"feature_size\": ([0-9.e+-]+)"))) << json;
-  EXPECT_NEAR(std::stod(m[1]), 0.05 * diagonal, 1e-9 * diagonal);
-  EXPECT_NE(json.find("\"stop\": \"feature_size\""), std::string::npos);
-  EXPECT_NE(runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --feature-size 2").exitCode, 0);
+  ASSERT_TRUE(std::regex_search(json, reported, std::regex("\"feature_size\": ([0-9.e+-]+)"))) << json;
+  EXPECT_EQ(std::stod(printed[1]), std::stod(reported[1]));  // the printed value is the value used
+  EXPECT_NEAR(std::stod(printed[2]), 100 * std::stod(reported[1]) / boundingBoxDiagonal(cow.positions), 1e-2);
+  EXPECT_NE(json.find("\"feature_size_halvings\": 0"), std::string::npos) << json;
+  const std::string bytes = fileBytes(dir.file("a.ply"));
+  fair("p.ply", "--feature-size " + printed[1].str());
+  fair("j.ply", "--feature-size " + reported[1].str());
+  fair("w.ply", "--feature-size auto");
+  EXPECT_EQ(fileBytes(dir.file("p.ply")), bytes);
+  EXPECT_EQ(fileBytes(dir.file("j.ply")), bytes);
+  EXPECT_EQ(fileBytes(dir.file("w.ply")), bytes);
+  // A length, not a fraction: larger than 1 is fine (here 6 % of the diagonal of a 100x cow).
+  for (Vec3& p : cow.positions) p *= 100;
+  io::writePly(dir.file("n.ply"), cow, {}, true);
+  EXPECT_NE(fair("big.ply", "--feature-size 12.8665").find("(feature_size)"), std::string::npos);
+  const CommandResult negative = runElastica("fair " + dir.file("n.ply") + " -o " + dir.file("g.ply") + " --feature-size -0.5");
+  EXPECT_NE(negative.exitCode, 0);
   EXPECT_FALSE(std::filesystem::exists(dir.file("g.ply")));
+}
+
+// A mistyped option is refused with the option it most likely means.
+TEST(Cli, AMistypedOptionGetsASuggestion) {
+  const CommandResult r = runElastica("fair in.ply -o out.ply --featur-size 1");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.output.find("(did you mean --feature-size?)"), std::string::npos) << r.output;
 }
 
 TEST(Cli, HelpForProgramAndSubcommands) {

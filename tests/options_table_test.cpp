@@ -197,11 +197,14 @@ TEST(OptionsTable, SpecialRowsWriteTheCoresValue) {
   EXPECT_EQ(readJob(fairing, v, Caller::MeshLab).flow.maxSteps, std::numeric_limits<long long>::max());
   v.set("maxSteps", 25);
   EXPECT_EQ(readJob(fairing, v, Caller::MeshLab).flow.maxSteps, 25);
-  // featureSize: MeshLab's value is a length, the other faces' a fraction of the diagonal.
+  // featureSize: one unit on every face, a length in the mesh's units (what reports print); -1 is
+  // "auto" everywhere (the shipped fairing.mlx says it).
   ParamValues f;
-  f.set("featureSize", 0.5);
-  EXPECT_EQ(readJob(fairing, f, Caller::MeshLab, 4.0).flow.featureSize, 0.5);
-  EXPECT_EQ(readJob(fairing, f, Caller::Python, 4.0).flow.featureSize, 2.0);
+  f.set("featureSize", 12.8665);
+  for (Caller caller : {Caller::MeshLab, Caller::Cli, Caller::Python, Caller::Blender})
+    EXPECT_EQ(readJob(fairing, f, caller).flow.featureSize, 12.8665);
+  f.set("featureSize", -1);
+  EXPECT_EQ(readJob(fairing, f, Caller::MeshLab).flow.featureSize, kAutoFeatureSize);
   // The lambda fix: the one place a bool becomes the H² − K treatment.
   ParamValues c;
   c.set("lambdaFix", 1);
@@ -223,13 +226,12 @@ TEST(OptionsTable, ABadValuePerParameterIsRefusedByName) {
       std::vector<double> bad{nan};
       if (p.type == ParamType::Enum) bad = {-1, double(p.enumWords.size()), 0.5};
       else {
-        bad.push_back(p.minExclusive ? p.minValue : p.minValue - 1);
+        // -1 is an AbsPerc's "auto"; below 0 otherwise is refused.
+        bad.push_back(p.minExclusive ? p.minValue : p.minValue - (p.type == ParamType::AbsPerc ? 0.5 : 1));
         if (std::isfinite(p.maxValue)) bad.push_back(p.maxValue + 1);
-        if (p.type == ParamType::AbsPerc) bad.push_back(1.5);  // a fraction, outside MeshLab
       }
       for (double x : bad) {
         for (Caller caller : {Caller::MeshLab, Caller::Cli, Caller::Python, Caller::Blender}) {
-          if (p.type == ParamType::AbsPerc && x == 1.5 && caller == Caller::MeshLab) continue;  // a length
           ParamValues v;
           v.set(p.key(), x);
           const std::string message = messageOf([&] { readJob(spec, v, caller); });

@@ -80,6 +80,20 @@ std::string limitWarning(StopReason stop, const FilterSpec& spec, const FlowOpti
   return {};
 }
 
+// The amount's roughness before and after (the region's faces, renumbered in the result), and
+// for a result still rough the amount on the input to type instead: flow times add, and the time
+// grows as the amount's 4th power, so the amount that adds the result's own is their 4-norm.
+void measureRoughness(FairingResult::Amount& a, const TriMesh& input, const FaceSet* faces, const TriMesh& result,
+                      const FlowReport& report) {
+  const std::optional<FaceSet> after = faces ? std::optional<FaceSet>(FaceSet(report.regionFaces)) : std::nullopt;
+  const FaceSet* resultFaces = after && !after->faces.empty() ? &*after : nullptr;
+  a.roughnessBefore = surfaceRoughness(input, faces);
+  a.roughnessAfter = surfaceRoughness(result, faces ? resultFaces : nullptr);
+  if (a.roughnessAfter <= kRoughResult || (faces && !resultFaces)) return;
+  const double more = autoFeatureSize(result, resultFaces);
+  a.suggested = roundedAmount(std::pow(std::pow(a.featureSize, 4) + std::pow(more, 4), 0.25));
+}
+
 }  // namespace
 
 namespace {
@@ -201,6 +215,8 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   }
   r.amount.featureSize = opt.featureSize > 0 ? opt.featureSize : 0;
   r.amount.edges = meanEdge > 0 ? r.amount.featureSize / meanEdge : 0;
+  r.amount.perDiagonal = r.diagonal > 0 ? r.amount.featureSize / r.diagonal : 0;
+  if (r.amount.featureSize > 0) measureRoughness(r.amount, input, faces, mesh, r.report);
   const FlowReport& report = r.report;
 
   r.connectivityChanged = mesh.faces != input.faces;
@@ -259,7 +275,8 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   }
   if (r.amount.featureSize > 0) {
     const int h = r.amount.halvings;
-    r.amountLine = "fairing amount: feature size " + number(r.amount.featureSize, "%.6g") + " (" +
+    r.amountLine = "fairing amount: feature size " + exactDecimal(r.amount.featureSize) + " (" +
+                   number(100 * r.amount.perDiagonal, "%.3g") + " % of the bounding-box diagonal, " +
                    number(r.amount.edges, "%.3g") + " mean edge lengths" + (r.amount.automatic ? ", auto" : "") + ")";
     if (h > 0)
       r.amountLine += ", halved " + std::to_string(h) + (h == 1 ? " time" : " times") +
@@ -273,6 +290,13 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
       r.amountLine += "; the subdivision levels were not used (an amount keeps the mesh's vertices; feature size 0 "
                       "fairs coarse to fine, to the limit shape)";
     r.log.push_back({h > 0 || rose || levelsUnused ? Severity::Warning : Severity::Info, r.amountLine});
+    if (r.amount.suggested > 0) {
+      r.roughLine = "the result is still rough (roughness " + number(r.amount.roughnessAfter, "%.3g") + ", from " +
+                    number(r.amount.roughnessBefore, "%.3g") + "; clean scans measure below " +
+                    number(kRoughResult, "%.3g") + "): a feature size of " + exactDecimal(r.amount.suggested) +
+                    " would smooth it further";
+      r.log.push_back({Severity::Warning, r.roughLine});
+    }
   }
   if (r.movedRms >= 0 && r.diagonal > 0) {
     r.movedLine = "the vertices moved by " + number(100 * r.movedRms / r.diagonal, "%.3g") +
@@ -339,8 +363,10 @@ FillHolesResult runFillHoles(TriMesh mesh, const HoleFillOptions& opt, bool outp
     std::string line = "hole of " + std::to_string(h.borderEdges) + " border edges: ";
     if (h.filled)
       line += "filled with " + std::to_string(h.newVertices) + " vertices and " + std::to_string(h.newFaces) +
-              " faces; patch energy " + number(h.energyBefore) + " -> " + number(h.energyAfter) + " in " +
-              std::to_string(h.steps) + " steps (" + labelOf(h.stop) + ")";
+              " faces; patch energy " + number(h.energyBefore) + " -> " + number(h.energyAfter) +
+              (h.steps == 0 && h.stop == StopReason::Unchanged
+                   ? std::string(" (no flow)")  // HoleReport::reason says why, where it matters
+                   : " in " + std::to_string(h.steps) + " steps (" + labelOf(h.stop) + ")");
     else
       line += "left open";
     if (!h.reason.empty()) line += "; " + h.reason;

@@ -194,14 +194,15 @@ FilterSpec fairing(const MeshFacts& mesh) {
   ParamSpec feature = numberRow(
       ParamType::AbsPerc, "flow.featureSize", {"featureSize", "--feature-size", "feature_size", "feature_size"},
       [](auto& j) -> auto& { return j.flow.featureSize; }, 0, kUnbounded, "Feature size",
-      "Smooth away bumps smaller than this, keep larger shapes (two edge lengths take much of a scan's "
-      "noise off). Default: 2 short edge lengths of the faces to fair. 0: fair to the limit shape (a sphere, a "
-      "Clifford torus), which changes the whole model.",
-      "a fairing amount: smooth away bumps smaller than this fraction of the bounding-box diagonal, keep larger "
-      "shapes, then stop; two edge lengths take much of a scan's noise off, and the output says how many edge "
-      "lengths it was and how far the vertices moved. Default auto: 2 short edge lengths (the 25 % quantile) of the "
-      "faces to fair, halved while it would raise the energy. 0: fair until converged, to the limit shape (a "
-      "sphere, a Clifford torus)");
+      "Smooth away bumps smaller than this length, keep larger shapes. Default: sized from the faces to fair, 2 "
+      "short edge lengths on a clean surface and more on a noisy one (the log prints it with its % of the diagonal "
+      "and its edge lengths). 0: fair to the limit shape (a sphere, a Clifford torus), which changes the whole "
+      "model. -1 (in a script): the default.",
+      "a fairing amount, a length in the mesh's units (as the output prints it and the report's feature_size holds "
+      "it): smooth away bumps smaller than it, keep larger shapes, then stop. Default auto: sized from the faces to "
+      "fair, 2 short edge lengths (the 25 % quantile) on a clean surface and more on a noisy one (docs/options.md), "
+      "halved while it would raise the energy; the output says when the result is still rough and suggests an "
+      "amount. 0: fair until converged, to the limit shape (a sphere, a Clifford torus)");
   feature.defaultValue = mesh.featureSize;
   p.push_back(feature);
   p.push_back(numberRow(
@@ -242,7 +243,7 @@ FilterSpec fairing(const MeshFacts& mesh) {
   p.push_back(selected);
   p.push_back(boolRow("colorByMeanCurvature",
                       {"colorByMeanCurvature", "--color-by-mean-curvature", "", "color_by_mean_curvature"},
-                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by mean curvature",
+                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by curvature",
                       "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high).",
                       "colour vertices by H (red low, blue high)"));
   return s;
@@ -292,7 +293,7 @@ FilterSpec fillHoles() {
                       [](auto& j) -> auto& { return j.selectNewFaces; }, "Select the newly created faces",
                       "Afterwards only the new faces are selected (with no hole filled, the selection stays)."));
   p.push_back(boolRow("colorByMeanCurvature", {"", "--color-by-mean-curvature", "", ""},
-                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by mean curvature",
+                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by curvature",
                       "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high).",
                       "colour vertices by H (red low, blue high)"));
   return s;
@@ -336,8 +337,6 @@ std::string number(double x) {
   std::snprintf(buf, sizeof buf, "%.9g", x);
   return buf;
 }
-
-bool takesFraction(Caller face) { return face != Caller::MeshLab && face != Caller::Api; }
 
 }  // namespace
 
@@ -424,22 +423,21 @@ void checkValue(const ParamSpec& p, double x, Caller face) {
     if (x == std::floor(x) && x >= 0 && x < n) return;
     throw InvalidInputError(p.describe(face) + ": enum value " + number(x) + " is not in 0.." + std::to_string(n - 1));
   }
-  const bool fraction = p.type == ParamType::AbsPerc && takesFraction(face);
-  const double lo = p.minValue, hi = fraction ? 1.0 : p.maxValue;
+  if (p.type == ParamType::AbsPerc && x == kAutoFeatureSize) return;  // "auto", every face's default
+  const double lo = p.minValue, hi = p.maxValue;
   if ((p.minExclusive ? x > lo : x >= lo) && x <= hi) return;  // NaN fails both
   std::string range = hi < kUnbounded ? "in " + number(lo) + ".." + number(hi) : (p.minExclusive ? "> " : ">= ") + number(lo);
-  if (fraction) range += " (a fraction of the bounding-box diagonal)";
+  if (p.type == ParamType::AbsPerc) range += " (a length in the mesh's units; -1: auto)";
   if (!p.rangeHint.empty()) range += " (" + p.rangeHint + ")";
   throw InvalidInputError(p.describe(face) + " must be " + range + ", not " + number(x));
 }
 
-JobOptions readJob(const FilterSpec& spec, const ParamValues& v, Caller face, double diagonal) {
+JobOptions readJob(const FilterSpec& spec, const ParamValues& v, Caller face) {
   JobOptions job;
   for (const ParamSpec& p : spec.params) {
     if (!v.has(p.key())) continue;
-    double x = v.getFloat(p.key());
+    const double x = v.getFloat(p.key());
     checkValue(p, x, face);
-    if (p.type == ParamType::AbsPerc && takesFraction(face)) x *= diagonal;
     p.set(job, x);
   }
   return job;

@@ -69,13 +69,19 @@ nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int in
   nlohmann::json j = toJson(r);
   j["input"] = {{"vertices", inputVertices}, {"faces", inputFaces}};
   j["flow"] = nameOf(opt.flow);
-  // The amount as a length (the CLI's fraction × diagonal): the one the run used, when known.
+  // The amount as a length, the unit every face takes: the one the run used, when known.
   if (!result && opt.featureSize > 0) j["feature_size"] = opt.featureSize;
   if (result && result->amount.featureSize > 0) {
-    j["feature_size"] = result->amount.featureSize;
-    j["feature_size_edges"] = result->amount.edges;
-    j["feature_size_auto"] = result->amount.automatic;
-    j["feature_size_halvings"] = result->amount.halvings;
+    const FairingResult::Amount& a = result->amount;
+    j["feature_size"] = a.featureSize;
+    j["feature_size_per_diagonal"] = a.perDiagonal;
+    j["feature_size_edges"] = a.edges;
+    j["feature_size_auto"] = a.automatic;
+    j["feature_size_halvings"] = a.halvings;
+    j["roughness_before"] = a.roughnessBefore;
+    j["roughness_after"] = a.roughnessAfter;
+    j["rough"] = a.suggested > 0;  // still rough: suggested_feature_size smooths it further
+    if (a.suggested > 0) j["suggested_feature_size"] = a.suggested;
   }
   if (result && result->movedRms >= 0) {
     const double d = result->diagonal > 0 ? result->diagonal : 1;

@@ -63,6 +63,8 @@ def _property(p):
     if p["type"] == "int":
         bounds = {k: int(min(max(v, -2**31), 2**31 - 1)) for k, v in bounds.items()}
         return IntProperty(default=int(p["default"]), **bounds, **common)
+    if p.get("unit") == "length":  # shown with the scene's length unit (the mesh's own coordinates)
+        common.update(subtype='DISTANCE', unit='LENGTH')
     if p["default"] is None:  # sized from the mesh at each run (the feature size's "auto"): not remembered
         return FloatProperty(default=0.0, precision=4, step=1, options={'SKIP_SAVE'}, **bounds, **common)
     return FloatProperty(default=p["default"], precision=4, step=1, **bounds, **common)

@@ -287,8 +287,8 @@ def test_example_scripts_list_every_parameter_at_its_default():
                     assert got.get("type") == "RichBool" and got.get("value") == str(p["default"]).lower(), where
                 elif p["type"] == "int":
                     assert got.get("type") == "RichInt" and int(got.get("value")) == p["default"], where
-                elif p["type"] == "float" and p["default"] is None:  # the feature size: the mesh's own by default
-                    assert got.get("type") == p["rich_type"] and float(got.get("value")) >= 0, where
+                elif p["type"] == "float" and p["default"] is None:  # the feature size: -1, the mesh's own
+                    assert got.get("type") == p["rich_type"] and float(got.get("value")) == -1, where
                 elif p["type"] == "float":  # RichFloat
                     assert got.get("type") == p["rich_type"] and float(got.get("value")) == pytest.approx(p["default"]), where
                 else:
@@ -355,7 +355,7 @@ def test_keywords_are_the_options_tables(noisy):
                 with pytest.raises(elastica.InvalidInputError, match=f"{p['keyword']} must be one of"):
                     function(V, F, **{p["keyword"]: "bogus"})
             elif p["type"] in ("int", "float") and p.get("min") is not None:
-                below = int(p["min"]) - 1 if p["type"] == "int" else p["min"] - 1
+                below = int(p["min"]) - 1 if p["type"] == "int" else p["min"] - 0.5  # (-1 is the amount's "auto")
                 with pytest.raises(elastica.InvalidInputError, match=f"^{p['keyword']} must be"):
                     function(V, F, **{p["keyword"]: below})
     _, _, report = elastica.fair(V, F, scheme=None, max_steps=None, energy_tol=None)
@@ -375,19 +375,79 @@ def test_remesh_and_flip_edges_are_the_cli_flags(noisy, tmp_path):
     assert (F2 == F).all() and r["mesh_quality"]["remeshings"] == 0
 
 
-def test_feature_size_is_a_fraction_of_the_diagonal(noisy):
-    """feature_size=F: the flow time of F x the bounding-box diagonal, then report['stop'] says so;
-    the redo panel and filters() show it as a fraction (0..1)."""
+def test_feature_size_is_a_length_in_every_face(noisy):
+    """feature_size=F: a length in the mesh's units, the report's feature_size, the flow time of F, then
+    report['stop'] says so; filters() shows it as a length (no upper bound), the default None."""
     V, F = elastica.read(noisy)
-    _, _, report = elastica.fair(V, F, feature_size=0.05)
-    assert report["stop"] == "feature_size"
+    _, _, report = elastica.fair(V, F, feature_size=0.1)
+    assert report["stop"] == "feature_size" and report["feature_size"] == 0.1
     diagonal = float(np.linalg.norm(V.max(axis=0) - V.min(axis=0)))
-    assert report["feature_size"] == pytest.approx(0.05 * diagonal, rel=1e-9)
+    assert report["feature_size_per_diagonal"] == pytest.approx(0.1 / diagonal, rel=1e-12)
     spec = {p["name"]: p for p in elastica.filters()["fair"]["parameters"]}["featureSize"]
-    assert spec["keyword"] == "feature_size" and spec["rich_type"] == "RichAbsPerc"
-    assert (spec["min"], spec["max"], spec["default"]) == (0.0, 1.0, None)  # None: the mesh's own
+    assert spec["keyword"] == "feature_size" and spec["rich_type"] == "RichAbsPerc" and spec["unit"] == "length"
+    assert (spec["min"], spec["max"], spec["default"]) == (0.0, None, None)  # None: the mesh's own
+    _, _, big = elastica.fair(V * 100, F, feature_size=12.8665)  # larger than 1: a length, not a fraction
+    assert big["stop"] == "feature_size" and big["feature_size"] == 12.8665
     with pytest.raises(elastica.InvalidInputError, match="feature_size"):
-        elastica.fair(V, F, feature_size=1.5)
+        elastica.fair(V, F, feature_size=-0.5)
+
+
+def test_the_reports_amount_typed_back_gives_the_same_output(tmp_path):
+    """On a real scan with 3-D noise (the bundled bunny, 0.3 mean edge): auto_feature_size is the amount
+    the default used (report['feature_size']), and that value typed back gives the same arrays, bit for
+    bit, and the CLI's --feature-size with it the same file as fair --report's own run."""
+    V, F = elastica.read(os.path.join(DATA, "bunny.ply"))
+    edge = np.linalg.norm(V[F] - V[np.roll(F, -1, axis=1)], axis=2).mean()
+    rng = np.random.default_rng(1)
+    step = rng.normal(size=V.shape)
+    step *= (0.3 * edge * rng.random(len(V)) ** (1 / 3) / np.linalg.norm(step, axis=1))[:, None]
+    V = V + step
+    V2, F2, r = elastica.fair(V, F)
+    assert r["feature_size_auto"] and r["feature_size_halvings"] == 0
+    assert elastica.auto_feature_size(V, F) == r["feature_size"]
+    assert r["roughness_before"] == elastica.surface_roughness(V, F) and r["roughness_after"] < r["roughness_before"]
+    V3, F3, r3 = elastica.fair(V, F, feature_size=r["feature_size"])
+    assert (V3 == V2).all() and (F3 == F2).all() and not r3["feature_size_auto"]
+    noisy = tmp_path / "noisy.ply"
+    elastica.write(noisy, V, F)
+    cli("fair", noisy, "-o", tmp_path / "a.ply", "--report", tmp_path / "r.json")
+    typed = json.load(open(tmp_path / "r.json"))["feature_size"]
+    assert typed == r["feature_size"]
+    cli("fair", noisy, "-o", tmp_path / "b.ply", "--feature-size", repr(typed))
+    assert (tmp_path / "a.ply").read_bytes() == (tmp_path / "b.ply").read_bytes()
+
+
+def test_the_selection_round_trip(tmp_path):
+    """write(selected_faces=mask) stores MeshLab's face selection (PLY face flags), which the CLI's
+    --selected reads; read(selection=True) gives it back as a bool mask; fill_holes' new faces
+    likewise. The plain calls stay as they were."""
+    V, F = elastica.read(os.path.join(DATA, "bunny.ply"))
+    mask = V[F].mean(axis=1)[:, 1] > np.quantile(V[:, 1], 0.8)
+    path = tmp_path / "sel.ply"
+    elastica.write(path, V, F, selected_faces=mask)
+    V1, F1, sel = elastica.read(path, selection=True)
+    assert sel.dtype == bool and (sel == mask).all() and (F1 == F).all() and same(V1, V, 1e-6)
+    assert len(elastica.read(path)) == 2
+    # The CLI's --selected fairs the region the mask names, as Python's selected_faces does.
+    cli("fair", path, "-o", tmp_path / "f.ply", "--selected")
+    Vp, _, _ = elastica.fair(V1, F1, sel)
+    assert same(elastica.read(tmp_path / "f.ply")[0], Vp, 1e-6)
+    # Indices, an empty selection, and a file without flags.
+    elastica.write(path, V, F, selected_faces=np.flatnonzero(mask))
+    assert (elastica.read(path, selection=True)[2] == mask).all()
+    elastica.write(path, V, F, selected_faces=np.zeros(len(F), bool))
+    assert not elastica.read(path, selection=True)[2].any()
+    elastica.write(tmp_path / "plain.ply", V, F)
+    assert not elastica.read(tmp_path / "plain.ply", selection=True)[2].any()
+    # The fill's new faces, selected as MeshLab's fill selects them.
+    Vh, Fh = elastica.read(BUNNY_HOLE)
+    Vf, Ff, new, _ = elastica.fill_holes(Vh, Fh)
+    elastica.write(tmp_path / "filled.ply", Vf, Ff, selected_faces=new)
+    assert (elastica.read(tmp_path / "filled.ply", selection=True)[2] == new).all()
+    with pytest.raises(elastica.InvalidInputError, match="only a .ply"):
+        elastica.write(tmp_path / "sel.off", V, F, selected_faces=mask)
+    with pytest.raises(elastica.InvalidInputError, match="one entry per face"):
+        elastica.write(path, V, F, selected_faces=mask[:-1])
 
 
 def test_an_open_sheet_keeps_its_rim_unless_close_rims(tmp_path):
@@ -481,7 +541,7 @@ def test_defaults_keep_the_model_of_a_scan():
     E0 = elastica.curvature(V, F)["energy"]
     V2, F2, r = elastica.fair(V, F)
     assert r["stop"] == "feature_size" and r["feature_size_auto"] and r["feature_size_halvings"] == 0
-    assert r["feature_size"] == pytest.approx(elastica.auto_feature_size(V, F) * diagonal, rel=1e-9)
+    assert r["feature_size"] == elastica.auto_feature_size(V, F)
     assert (F2 == F).all()  # the amount keeps the connectivity
     rms = float(np.sqrt(((V2 - V) ** 2).sum(axis=1).mean()))
     assert r["moved"]["rms"] == pytest.approx(rms, rel=1e-9)
@@ -491,7 +551,7 @@ def test_defaults_keep_the_model_of_a_scan():
     top = np.flatnonzero(V[F].mean(axis=1)[:, 1] > np.quantile(V[:, 1], 0.8))
     V3, F3, r3 = elastica.fair(V, F, top)
     assert r3["stop"] == "feature_size" and r3["region_energy_after"] < r3["region_energy_before"]
-    assert r3["feature_size"] == pytest.approx(elastica.auto_feature_size(V, F, top) * diagonal, rel=1e-9)
+    assert r3["feature_size"] == elastica.auto_feature_size(V, F, top)
     assert 0 < np.sqrt(((V3 - V) ** 2).sum(axis=1).mean()) <= 0.01 * diagonal
     # The limit shape stays one keyword away.
     _, _, limit = elastica.fair(V, F, feature_size=0, max_steps=3)

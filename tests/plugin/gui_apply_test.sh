@@ -96,7 +96,7 @@ expect_no_property() {
 # quality is added; the log says the amount and how far the surface moved.
 case=fairing; run_case fairing "$data/bunny.ply" "Discrete Elastica Fairing"
 expect_log "Discrete Elastica Fairing: 1839 -> 1839 vertices, [0-9]* steps in .* (faired to the feature size)"
-expect_log "Discrete Elastica Fairing: fairing amount: feature size [0-9.e+-]* ([0-9.]* mean edge lengths)"
+expect_log "Discrete Elastica Fairing: fairing amount: feature size [0-9.e+-]* ([0-9.e+-]* % of the bounding-box diagonal, [0-9.]* mean edge lengths"
 expect_log "Discrete Elastica Fairing: the vertices moved by [0-9.e+-]* % of the bounding-box diagonal"
 [[ $(ply_count "$out" vertex) == 1839 ]] || fail "fairing: exported $(ply_count "$out" vertex) vertices, not the input's 1839"
 for p in red quality; do expect_no_property $p; done

@@ -506,12 +506,16 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
   }
 }
 
-void requireMovingVertex(const FlowState& state) {
-  if (state.roles().freeCount == 0 && state.roles().slidingCount == 0) {
+// The message names the selection only when there is one: without, the boundary holds them all.
+void requireMovingVertex(const FlowState& state, bool selection) {
+  if (state.roles().freeCount != 0 || state.roles().slidingCount != 0) return;
+  if (selection)
     throw InvalidInputError(
         "fair: no vertex can move (a moving vertex needs all its faces selected and, with a fixed "
         "boundary, must be at least two rings away from the boundary)");
-  }
+  throw InvalidInputError(
+      "fair: no vertex can move: every vertex is on the boundary or next to it, and a fixed boundary keeps "
+      "those two rings in place (the mesh is too small for its boundary; a sliding boundary lets it move)");
 }
 
 // The energy where the run's first flow starts (after any refinement before it), as the report's
@@ -723,7 +727,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   // A fairing amount keeps the user's vertices and connectivity: no refinement, no remeshing.
   if (opt.scheme == Scheme::Vector && run.timeLimited()) {
     FlowState state(region.copyTakingCaches(), opt, internal, slider.get());
-    requireMovingVertex(state);
+    requireMovingVertex(state, !region.selection().empty());
     recordStart(report, state);
     FlowStage stage = beginStage(state, 0);
     featureSizeStage(state, run, stage);
@@ -852,7 +856,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
       last.selection = region.selection();
       last.level = level;
       FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
-      requireMovingVertex(state);
+      requireMovingVertex(state, !region.selection().empty());
       refineLater = level < opt.subdivisionLevels &&
                     (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
       const double stageStart = run.elapsed();

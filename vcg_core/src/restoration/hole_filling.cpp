@@ -267,6 +267,32 @@ class MonotonePatch {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// A patch is "converged" only if a flow of it ran, converged and was kept: a patch no flow moved
+// (no vertex inside, a stage list that ends before the flow) or whose every flow was undone is
+// "unchanged" by the flow, and the reason says which.
+void settleStop(HoleReport& hole, bool innerVertices) {
+  if (hole.stop != StopReason::Converged) return;  // a limit or a divergence says so itself
+  bool flowed = false, flowKept = false;
+  for (const FillStageReport& s : hole.stages) {
+    if (s.stage.find("flow") == std::string::npos) continue;
+    flowed = true;
+    flowKept = flowKept || s.kept;
+  }
+  if (flowKept) return;
+  hole.stop = StopReason::Unchanged;
+  if (!hole.reason.empty()) return;
+  double smallest = 180;  // of the patch kept
+  for (const FillStageReport& s : hole.stages)
+    if (s.kept) smallest = s.minAngleDegrees;
+  char angle[64];
+  std::snprintf(angle, sizeof angle, "%.1f", smallest);
+  if (flowed)
+    hole.reason = "every flow of the patch was undone (it lowered the smallest angle or raised the energy)";
+  else if (!innerVertices && smallest < kTargetAngleDegrees)  // a fan with needles: say why it stays
+    hole.reason = std::string("a flat patch with no vertex inside (the border's edge lengths asked for none), smallest "
+                              "angle ") + angle + "°: no flow can bend it";
+}
+
 // Refines, embeds and fairs the patch (the faces flagged in `patchFace`) of `sub`, a piece of the
 // mesh around one hole. The vertices from `firstNew` on are the patch's own; nothing else moves.
 void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
@@ -630,6 +656,7 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaces> index, std::vecto
       const SerialRegions serial;
       restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)),
                    hole);
+      settleStop(hole, sub.mesh.vertexCount() > subVertices);
       flowSteps += hole.steps;
 
       auto global = [&](int i) { return i < subVertices ? sub.vertex[i] : firstVertex + i - subVertices; };

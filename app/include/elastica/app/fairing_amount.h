@@ -3,15 +3,18 @@
 // smoothing filters do, and never the flow's limit shape (a sphere), which stays one choice away
 // (feature size 0).
 //
-// The amount is kAutoFeatureEdges times the kAutoEdgeQuantile quantile of the faces' edge lengths,
-// not of their mean: the amount's filter runs one flow time for the whole mesh, and a scan that is
-// finer where its detail is lost that detail to an amount sized from the mean edge. Measurements:
-// docs/options.md, "The default amount".
+// The amount is a length in the mesh's units on every face: amountEdges(roughness) times the
+// kAutoEdgeQuantile quantile of the faces' edge lengths, rounded to 6 significant digits so that
+// the value printed is the value used. The edge quantile, not the mean: the amount runs one flow
+// time for the whole mesh, and a scan finer where its detail is lost that detail to an amount
+// sized from the mean. The roughness (surfaceRoughness) raises it where the surface is noisy.
+// Measurements: docs/options.md, "The default amount".
 #pragma once
 
 #include <elastica/face_set.h>
 #include <elastica/types.h>
 
+#include <string>
 #include <vector>
 
 namespace elastica::app {
@@ -26,12 +29,37 @@ inline constexpr double kAutoEdgeQuantile = 0.25;
 /// comes back. An amount the user chose is not halved.
 inline constexpr int kAmountHalvings = 4;
 
-/// kAutoFeatureEdges × the kAutoEdgeQuantile quantile of `edgeLengths` (each face's three edges;
-/// an inner edge counted twice changes no quantile much). 0 for no edges. Reorders `edgeLengths`.
-double autoFeatureSize(std::vector<double>& edgeLengths);
+/// The roughness below which a surface counts as clean (a scan as scanned), and the amount's
+/// growth above it, in edge lengths per unit of roughness.
+inline constexpr double kCleanRoughness = 0.1;
+inline constexpr double kEdgesPerRoughness = 16;
+/// A result rougher than this is reported as still rough, with a larger amount suggested.
+inline constexpr double kRoughResult = 0.1;
 
-/// The same for `mesh`, over the faces of `region` (all faces without one).
+/// The amount in edge lengths for a surface of `roughness` (surfaceRoughness): kAutoFeatureEdges
+/// on a clean surface, more on a noisy one.
+double amountEdges(double roughness);
+
+/// How rough the faces of `region` (all faces without one) are: the median over their vertices of
+/// the height over the neighbours' centre along the normal, less the neighbours' own mean height,
+/// in median edge lengths. Smooth curvature cancels in the difference; vertex noise does not
+/// (3-D noise uniform in a ball of 0.3 edge gives about 0.1). 0 for no faces.
+double surfaceRoughness(const TriMesh& mesh, const FaceSet* region);
+
+/// amountEdges(roughness) × the kAutoEdgeQuantile quantile of `edgeLengths` (each face's three
+/// edges; an inner edge counted twice changes no quantile much), rounded (roundedAmount). 0 for
+/// no edges. Reorders `edgeLengths`.
+double autoFeatureSize(std::vector<double>& edgeLengths, double roughness);
+
+/// The same for `mesh`, over the faces of `region` (all faces without one), with its roughness.
 double autoFeatureSize(const TriMesh& mesh, const FaceSet* region);
+
+/// `x` to 6 significant digits: an amount that prints as it is.
+double roundedAmount(double x);
+
+/// The shortest decimal (6 significant digits or more) that reads back as `x` exactly: what a
+/// user can type back.
+std::string exactDecimal(double x);
 
 /// The mean edge length of the faces to fair (each face's three edges), to state an amount in it.
 double meanFaceEdge(const TriMesh& mesh, const FaceSet* region);

@@ -12,26 +12,6 @@
 
 namespace elastica::app {
 
-/// The facts the defaults depend on (selected live faces, the live vertices' bounding box).
-template <class VcgMeshT>
-MeshFacts meshFacts(const VcgMeshT& m) {
-  MeshFacts facts;
-  for (const auto& f : m.face)
-    if (!f.IsD() && f.IsS()) ++facts.selectedFaces;
-  vcg::Box3<typename VcgMeshT::ScalarType> box;
-  for (const auto& v : m.vert)
-    if (!v.IsD()) box.Add(v.cP());
-  facts.diagonal = box.IsNull() ? 0.0 : double(box.Diag());
-  // The amount "auto" stands for (autoFeatureSize): over the selected faces if any, else all.
-  std::vector<double> lengths;
-  for (const auto& f : m.face) {
-    if (f.IsD() || (facts.selectedFaces > 0 && !f.IsS())) continue;
-    for (int k = 0; k < 3; ++k) lengths.push_back(double(vcg::Distance(f.cV(k)->cP(), f.cV((k + 1) % 3)->cP())));
-  }
-  facts.featureSize = autoFeatureSize(lengths);
-  return facts;
-}
-
 template <class VcgMeshT>
 void updateBoxAndNormals(VcgMeshT& m) {
   vcg::tri::UpdateBounding<VcgMeshT>::Box(m);
@@ -49,6 +29,22 @@ FaceSet faceSelection(const VcgMeshT& m) {
     ++index;
   }
   return FaceSet(std::move(selected));
+}
+
+/// The facts the defaults depend on (selected live faces, the live vertices' bounding box).
+template <class VcgMeshT>
+MeshFacts meshFacts(const VcgMeshT& m) {
+  MeshFacts facts;
+  for (const auto& f : m.face)
+    if (!f.IsD() && f.IsS()) ++facts.selectedFaces;
+  vcg::Box3<typename VcgMeshT::ScalarType> box;
+  for (const auto& v : m.vert)
+    if (!v.IsD()) box.Add(v.cP());
+  facts.diagonal = box.IsNull() ? 0.0 : double(box.Diag());
+  // The amount "auto" stands for (autoFeatureSize): over the selected faces if any, else all.
+  const FaceSet selection = faceSelection(m);
+  facts.featureSize = autoFeatureSize(toTriMesh(m), facts.selectedFaces > 0 ? &selection : nullptr);
+  return facts;
 }
 
 /// Writes a fairing result back into `m`, the mesh it was copied from: only the positions when the

@@ -88,8 +88,12 @@ struct FairingResult {
   struct Amount {
     double featureSize = 0;  ///< the length used (after halvings); 0: none, the flow ran to its limit shape
     double edges = 0;        ///< featureSize in mean edge lengths of the faces to fair
+    double perDiagonal = 0;  ///< featureSize as a fraction of the input's bounding-box diagonal
     bool automatic = false;  ///< sized by autoFeatureSize ("auto", every face's default)
     int halvings = 0;        ///< times it was halved because it raised the energy (kAmountHalvings)
+    /// surfaceRoughness of the faces to fair, before and after; a result rougher than
+    /// kRoughResult gets `suggested`, the amount on the input that adds the result's own (else 0).
+    double roughnessBefore = 0, roughnessAfter = 0, suggested = 0;
   } amount;
   /// How far the vertices moved, RMS and largest, when the run kept the connectivity (-1 when it
   /// did not), and the input's bounding-box diagonal to state them in.
@@ -97,6 +101,8 @@ struct FairingResult {
   /// The amount and the distance moved as `log` words them (empty when not known), for faces that
   /// print their own summary.
   std::string amountLine, movedLine;
+  /// The result is still rough (Amount::suggested): what it measured and the amount to try; or empty.
+  std::string roughLine;
   /// A region faired to its limit shape by the default scheme: whether its mesh resolves it (the
   /// Loop-subdivided energy's rise, FlowReport::regionResolutionGap) and which scheme's result came
   /// back; empty otherwise.

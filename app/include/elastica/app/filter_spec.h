@@ -32,9 +32,8 @@ enum class FilterId { Fairing = 0, FillHoles = 1, Curvature = 2 };
 enum class Caller { MeshLab, Cli, Python, Blender, Api };
 
 /// The parameter kinds, as MeshLab names them in .mlx files (RichBool, RichInt, ...).
-/// AbsPerc is a length that MeshLab's dialog also shows as a percentage of the bounding-box
-/// diagonal: MeshLab's value (dialog, .mlx) is the length; the CLI, Python and Blender take a
-/// fraction of the diagonal (0..1).
+/// AbsPerc is a length in the mesh's units, on every face (MeshLab's dialog also shows it as a
+/// percentage of the bounding-box diagonal), and what a report prints: one unit everywhere.
 enum class ParamType { Bool, Int, Float, Enum, AbsPerc };
 
 /// "RichBool", "RichInt", "RichFloat", "RichEnum", "RichAbsPerc".
@@ -75,7 +74,7 @@ struct ParamSpec {
   std::string tooltip;
   std::string cliHelp;  ///< the --help line (in the CLI's words, naming other flags)
   /// Int, Float, AbsPerc: the accepted range, checked in one place (checkValue) for every face.
-  /// AbsPerc's range is for the length; faces that take a fraction accept 0..1.
+  /// AbsPerc also takes kAutoFeatureSize (-1, "auto").
   double minValue = -std::numeric_limits<double>::infinity();
   double maxValue = std::numeric_limits<double>::infinity();
   bool minExclusive = false;  ///< the minimum itself is refused (> 0)
@@ -144,15 +143,15 @@ class ParamValues {
   std::map<std::string, double> values_;
 };
 
-/// Checks `value` of row `p` as `caller` gives it (an AbsPerc value is a fraction of the diagonal
-/// outside MeshLab): in range, an Enum index in its table.
+/// Checks `value` of row `p` as `caller` gives it: in range (an AbsPerc length, or -1 for "auto"),
+/// an Enum index in its table.
 /// @throws InvalidInputError naming the parameter as `caller` does, its range and the value.
 void checkValue(const ParamSpec& p, double value, Caller caller);
 
 /// The options `v` stands for: a default JobOptions with every value of `v` checked (checkValue)
-/// and written into its field. Outside MeshLab an AbsPerc fraction is multiplied by `diagonal`.
+/// and written into its field.
 /// @throws InvalidInputError as checkValue.
-JobOptions readJob(const FilterSpec& spec, const ParamValues& v, Caller caller, double diagonal = 0);
+JobOptions readJob(const FilterSpec& spec, const ParamValues& v, Caller caller);
 
 /// Checks the options every entry point's run needs against the table's ranges (the values the
 /// rows read back, named by their fields), so a caller of the C++ API that filled the options
