@@ -36,10 +36,11 @@ double median(std::vector<double>& x) {
 
 // A vertex's neighbours' mean of `value`, over the faces' edges (an inner edge counted twice,
 // from both its faces, which weighs every inner neighbour alike). `count` 0: not a vertex of them.
+// `zero` explicitly: an Eigen vector's default is uninitialised.
 template <class T>
-std::vector<T> neighbourMean(const TriMesh& mesh, const FaceSet* region, const std::vector<T>& value,
+std::vector<T> neighbourMean(const TriMesh& mesh, const FaceSet* region, const std::vector<T>& value, const T& zero,
                              std::vector<int>& count) {
-  std::vector<T> sum(value.size(), T{});
+  std::vector<T> sum(value.size(), zero);
   count.assign(value.size(), 0);
   forEachFace(mesh, region, [&](const Face& t) {
     for (int k = 0; k < 3; ++k) {
@@ -78,7 +79,7 @@ double surfaceRoughness(const TriMesh& mesh, const FaceSet* region) {
     for (int k = 0; k < 3; ++k) normal[t[k]] += areaNormal;
   });
   std::vector<int> count;
-  const std::vector<Vec3> centre = neighbourMean(mesh, region, mesh.positions, count);
+  const std::vector<Vec3> centre = neighbourMean(mesh, region, mesh.positions, Vec3(Vec3::Zero()), count);
   // The height of each vertex over its neighbours' centre, along its normal: curvature makes it
   // vary smoothly, noise from one vertex to the next; so the height less its neighbours' mean.
   std::vector<double> height(n, 0.0);
@@ -87,7 +88,7 @@ double surfaceRoughness(const TriMesh& mesh, const FaceSet* region) {
     if (count[v] > 0 && len > 0) height[v] = normal[v].dot(centre[v] - mesh.positions[v]) / len;
   }
   std::vector<int> unused;
-  const std::vector<double> around = neighbourMean(mesh, region, height, unused);
+  const std::vector<double> around = neighbourMean(mesh, region, height, 0.0, unused);
   std::vector<double> rough, edges;
   for (std::size_t v = 0; v < n; ++v)
     if (count[v] > 0) rough.push_back(std::abs(height[v] - around[v]));
