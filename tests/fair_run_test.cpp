@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,6 +87,29 @@ TEST(FairRun, RegionRunRefusesWhatAWholeRunRefuses) {
   EXPECT_NE(refusal(flipped, region).find("not consistently oriented"), std::string::npos);
   EXPECT_NE(refusal(bowTie, region).find("non-manifold vertices"), std::string::npos);
   EXPECT_NE(refusal(fin, region).find("non-manifold edge"), std::string::npos);
+}
+
+// The default amount's roughness (fairing_amount.h): a sphere's curvature cancels (a clean
+// icosphere reads as smooth as a clean scan), radial vertex noise does not; the clean sphere keeps
+// two 25 %-quantile edges, the noisy one gets more, each rounded to the 6 digits that print.
+TEST(FairingAmount, RoughnessSeesNoiseNotCurvature) {
+  TriMesh sphere = shapes::icosphere(1.0, 4);
+  std::vector<double> lengths;
+  for (const Face& t : sphere.faces)
+    for (int k = 0; k < 3; ++k) lengths.push_back((sphere.positions[t[k]] - sphere.positions[t[(k + 1) % 3]]).norm());
+  std::sort(lengths.begin(), lengths.end());
+  const double q25 = lengths[static_cast<std::size_t>(std::floor(0.25 * double(lengths.size() - 1)))];
+  const double clean = surfaceRoughness(sphere, nullptr);
+  EXPECT_LT(clean, 0.02);
+  EXPECT_EQ(autoFeatureSize(sphere, nullptr), roundedAmount(2 * q25));
+  TriMesh noisy = sphere;
+  shapes::addRadialNoise(noisy, 0.3 * meanFaceEdge(sphere, nullptr), 3);
+  const double rough = surfaceRoughness(noisy, nullptr);
+  EXPECT_GT(rough, kCleanRoughness);
+  EXPECT_GT(autoFeatureSize(noisy, nullptr), 2 * q25);
+  EXPECT_EQ(exactDecimal(roundedAmount(0.123456789)), "0.123457");
+  EXPECT_EQ(std::stod(exactDecimal(0.1 / 3)), 0.1 / 3);
+  std::printf("roughness: clean icosphere %.4f, radial noise of 0.3 edge %.4f\n", clean, rough);
 }
 
 }  // namespace
