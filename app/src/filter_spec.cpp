@@ -194,10 +194,9 @@ FilterSpec fairing(const MeshFacts& mesh) {
   ParamSpec feature = numberRow(
       ParamType::AbsPerc, "flow.featureSize", {"featureSize", "--feature-size", "feature_size", "feature_size"},
       [](auto& j) -> auto& { return j.flow.featureSize; }, 0, kUnbounded, "Feature size",
-      "Smooth away bumps smaller than this length, keep larger shapes. Default: sized from the faces to fair, 2 "
-      "short edge lengths on a clean surface and more on a noisy one (the log prints it with its % of the diagonal "
-      "and its edge lengths). 0: fair to the limit shape (a sphere, a Clifford torus), which changes the whole "
-      "model. -1 (in a script): the default.",
+      "Smooth away bumps smaller than this length, keep larger shapes. Default: the mesh's own, from its edge "
+      "lengths and roughness. 0: fair to the limit shape (a sphere, a Clifford torus), which changes the whole model. "
+      "-1 in a script: the default.",
       "a fairing amount, a length in the mesh's units (as the output prints it and the report's feature_size holds "
       "it): smooth away bumps smaller than it, keep larger shapes, then stop. Default auto: sized from the faces to "
       "fair, 2 short edge lengths (the 25 % quantile) on a clean surface and more on a noisy one (docs/options.md), "
@@ -243,7 +242,7 @@ FilterSpec fairing(const MeshFacts& mesh) {
   p.push_back(selected);
   p.push_back(boolRow("colorByMeanCurvature",
                       {"colorByMeanCurvature", "--color-by-mean-curvature", "", "color_by_mean_curvature"},
-                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by curvature",
+                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by mean curvature",
                       "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high).",
                       "colour vertices by H (red low, blue high)"));
   return s;
@@ -293,7 +292,7 @@ FilterSpec fillHoles() {
                       [](auto& j) -> auto& { return j.selectNewFaces; }, "Select the newly created faces",
                       "Afterwards only the new faces are selected (with no hole filled, the selection stays)."));
   p.push_back(boolRow("colorByMeanCurvature", {"", "--color-by-mean-curvature", "", ""},
-                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by curvature",
+                      [](auto& j) -> auto& { return j.colorByMeanCurvature; }, "Colour by mean curvature",
                       "Store H (+1/r on a sphere) as vertex quality; colour by it (red low, blue high).",
                       "colour vertices by H (red low, blue high)"));
   return s;
