@@ -104,9 +104,11 @@ Shard shardFromEnvironment() {
   const int id = envInt("SLURM_ARRAY_TASK_ID", -1);
   if (id < 0) return {};
   const int count = envInt("SLURM_ARRAY_TASK_COUNT", 0), first = envInt("SLURM_ARRAY_TASK_MIN", 0),
-            step = envInt("SLURM_ARRAY_TASK_STEP", 1);
-  // Task IDs run first, first + step, …: the k-th of `count` is shard k + 1.
-  const int k = step > 0 && (id - first) % step == 0 ? (id - first) / step : -1;
+            step = envInt("SLURM_ARRAY_TASK_STEP", 1), last = envInt("SLURM_ARRAY_TASK_MAX", -1);
+  // A range's task IDs run first, first + step, …: the k-th of `count` is shard k + 1. A list
+  // (1,3,7) is no range: its IDs do not say which k they are.
+  const bool range = step > 0 && (last < 0 || (last - first) / step + 1 == count);
+  const int k = range && (id - first) % step == 0 ? (id - first) / step : -1;
   if (count < 1 || k < 0 || k >= count)
     throw CLI::ValidationError("--shard", "cannot tell this task's shard from SLURM_ARRAY_TASK_ID=" + std::to_string(id) +
                                               " (an array given as a list?): pass --shard I/N");

@@ -31,8 +31,8 @@ struct Shard {
 /// "I/N" with 1 <= I <= N. @throws CLI::ValidationError otherwise.
 Shard parseShard(const std::string& text);
 
-/// The shard of a Slurm array task (SLURM_ARRAY_TASK_ID, _COUNT, _MIN and _STEP), or 1/1 outside
-/// one. @throws CLI::ValidationError if the task's index cannot be told (an array given as a list).
+/// The shard of a Slurm array task (SLURM_ARRAY_TASK_ID, _COUNT, _MIN, _MAX and _STEP), or 1/1
+/// outside one. @throws CLI::ValidationError if the array is no range (a list such as 1,3,7).
 Shard shardFromEnvironment();
 
 /// The items of `all` that belong to `shard`, in order.

@@ -102,7 +102,7 @@ void printSummary(std::FILE* out, const std::vector<BatchItem>& items, const std
                   const BatchCounts& c, double seconds, int jobs) {
   std::size_t width = 5;
   for (const BatchItem& it : items) width = std::max(width, it.input.size());
-  const int w = static_cast<int>(std::min<std::size_t>(width, 60));
+  const int w = static_cast<int>(width);
   std::fprintf(out, "%-*s  %-11s %8s  %-12s %s\n", w, "input", "status", "seconds", "stop", "energy / error");
   for (std::size_t i = 0; i < items.size(); ++i) {
     const ItemOutcome& o = outcomes[i];

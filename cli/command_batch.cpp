@@ -48,7 +48,9 @@ void addBatchOptions(CLI::App& cmd, BatchArgs& a) {
   cmd.add_option("--shard", a.shard,
                  "run part I of N (1-based; e.g. 2/4) of the sorted inputs; default from a Slurm array task "
                  "(SLURM_ARRAY_TASK_ID, _COUNT, _MIN, _STEP), else all");
-  cmd.add_option("--max-seconds", a.maxSeconds, "stop an input's run after this many seconds (it fails)")
+  cmd.add_option("--max-seconds", a.maxSeconds,
+                 "time limit per input: passed on as COMMAND's own --max-seconds (fair, fill: the flow stops and the "
+                 "mesh is written), the run killed at twice it; a COMMAND without one is killed at it (the input fails)")
       ->check(CLI::PositiveNumber);
   cmd.add_option("--format", a.format, "output format: ply, off, obj or stl (default ply)")
       ->check(CLI::IsMember({"ply", "off", "obj", "stl"}));
@@ -107,6 +109,7 @@ struct Plan {
   std::string command;
   RunKey key;
   bool wantsReport = false;  // COMMAND has --report: the log takes its stop and energies from it
+  double killAfter = 0;      // seconds after which a run is killed (0: never)
   std::vector<BatchItem> items;
   Shard shard;
   int allInputs = 0;
@@ -131,6 +134,10 @@ Plan makePlan(CLI::App& cmd, BatchArgs& a) {
   checkForwardedOptions(probe, plan.command, split.commandOptions, a.format);
   plan.shard = a.shard.empty() ? shardFromEnvironment() : parseShard(a.shard);
   plan.key = {programKey(), plan.command, split.commandOptions};
+  // A command with its own time limit stops its flow there and writes what it has; the kill is the backstop.
+  const bool ownLimit = probe.get_subcommand(plan.command)->get_option_no_throw("--max-seconds") != nullptr;
+  if (ownLimit && a.maxSeconds > 0) plan.key.options.insert(plan.key.options.end(), {"--max-seconds", CLI::detail::to_string(a.maxSeconds)});
+  plan.killAfter = ownLimit ? 2 * a.maxSeconds : a.maxSeconds;
 
   std::error_code ec;
   fs::create_directories(a.outputDir, ec);
@@ -158,7 +165,7 @@ JobLaunch launchOf(const Plan& plan, const BatchItem& item, const std::string& s
   return l;
 }
 
-ItemOutcome outcomeOf(const JobEnd& end, const std::string& scratch, int job, const BatchArgs& a) {
+ItemOutcome outcomeOf(const JobEnd& end, const std::string& scratch, int job, const Plan& plan) {
   const std::string base = (fs::path(scratch) / std::to_string(job)).string();
   ItemOutcome o;
   o.seconds = end.seconds;
@@ -167,7 +174,7 @@ ItemOutcome outcomeOf(const JobEnd& end, const std::string& scratch, int job, co
   if (end.exitCode == 0) o.status = ItemStatus::Ok;
   else if (end.timedOut) {
     o.status = ItemStatus::TimedOut;
-    o.error = "stopped at --max-seconds " + CLI::detail::to_string(a.maxSeconds);
+    o.error = "killed after " + CLI::detail::to_string(plan.killAfter) + " s (--max-seconds)";
   } else if (end.stopping && end.signal) {
     o.status = ItemStatus::Interrupted;
     o.error = std::string("interrupted by SIG") + sigabbrev_np(end.signal);
@@ -217,7 +224,7 @@ void runBatch(CLI::App& cmd, BatchArgs& a) {
   int stoppedBy = 0;
   try {
     stoppedBy = runJobs(
-        static_cast<int>(todo.size()), {a.jobs, a.maxSeconds},
+        static_cast<int>(todo.size()), {a.jobs, plan.killAfter},
         [&](int j) {
           ++counts.running;
           return launchOf(plan, plan.items[todo[j]], scratch, j);
@@ -225,7 +232,7 @@ void runBatch(CLI::App& cmd, BatchArgs& a) {
         [&](int j, const JobEnd& end) {
           const int i = todo[j];
           --counts.running;
-          outcomes[i] = outcomeOf(end, scratch, j, a);
+          outcomes[i] = outcomeOf(end, scratch, j, plan);
           if (outcomes[i].status == ItemStatus::Ok) writeRecord(plan.items[i], plan.key, digests[i]);
           if (outcomes[i].status == ItemStatus::Ok) ++counts.ok;
           else if (outcomes[i].status == ItemStatus::Interrupted) ++counts.interrupted;

@@ -185,7 +185,7 @@ TEST(Batch, ShardsPartitionTheInputs) {
   for (const auto& [input, n] : runs) EXPECT_EQ(n, 1) << input;
 
   const std::string log = dir.file("slurm.jsonl");
-  const test::CommandResult r = test::runCommand("SLURM_ARRAY_TASK_ID=11 SLURM_ARRAY_TASK_MIN=10 SLURM_ARRAY_TASK_COUNT=3 " +
+  const test::CommandResult r = test::runCommand("SLURM_ARRAY_TASK_ID=11 SLURM_ARRAY_TASK_MIN=10 SLURM_ARRAY_TASK_MAX=12 SLURM_ARRAY_TASK_COUNT=3 " +
                                                  std::string(ELASTICA_EXE) + " batch curvature -o " + quoted(dir.file("out2")) +
                                                  " --log " + quoted(log) + " " + quoted(in));
   ASSERT_EQ(r.exitCode, 0) << r.output;
@@ -193,6 +193,12 @@ TEST(Batch, ShardsPartitionTheInputs) {
   for (const auto& entry : logByInput(log)) slurm.insert(entry.first);
   EXPECT_EQ(slurm, shards[1]);
   EXPECT_NE(r.output.find("shard 2/3 (SLURM_ARRAY_TASK_ID=11)"), std::string::npos) << r.output;
+  // An array given as a list (1,3,7) says nothing of which shard a task is: refused.
+  const test::CommandResult list = test::runCommand(
+      "SLURM_ARRAY_TASK_ID=3 SLURM_ARRAY_TASK_MIN=1 SLURM_ARRAY_TASK_MAX=7 SLURM_ARRAY_TASK_COUNT=3 " + std::string(ELASTICA_EXE) +
+      " batch curvature -o " + quoted(dir.file("out3")) + " " + quoted(in));
+  EXPECT_EQ(list.exitCode, 2) << list.output;
+  EXPECT_NE(list.output.find("pass --shard"), std::string::npos) << list.output;
 }
 
 // COMMAND's options are checked by COMMAND before any run; batch's own refuse what it sets itself.
