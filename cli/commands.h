@@ -7,6 +7,7 @@
 
 namespace elastica::cli {
 
+void addBatchCommand(CLI::App& app);
 void addCurvatureCommand(CLI::App& app);
 void addGenerateCommand(CLI::App& app);
 void addFairCommand(CLI::App& app);

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   app.formatter(std::make_shared<elastica::cli::HelpFormatter>());  // subcommands inherit it
   app.require_subcommand(1);
   app.set_version_flag("--version", "elastica 0.1.0");
+  elastica::cli::addBatchCommand(app);
   elastica::cli::addCurvatureCommand(app);
   elastica::cli::addFairCommand(app);
   elastica::cli::addFillCommand(app);
