@@ -164,14 +164,19 @@ def again(V, F, sel, V3, F3, rep, max_seconds):
           f"region E {e1:.4g} -> {e2:.4g} ({100 * (e2 / e1 - 1):+.1f} %) -->", flush=True)
 
 
-def sizes_table(args, V, F):
-    """One region per size (or the whole scan), one table row each."""
+def sized_scan(args, V, F):
+    """The scan --sizes runs on (Loop-subdivided --loop times) and its name in the table."""
     if args.loop:
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
         from loop_energy import loop_subdivide
         for _ in range(args.loop):
             V, F = loop_subdivide(V, F)
-    name = os.path.basename(args.mesh) + (f" Loop x{args.loop}" if args.loop else "")
+    return V, F, os.path.basename(args.mesh) + (f" Loop x{args.loop}" if args.loop else "")
+
+
+def sizes_table(args, V, F):
+    """One region per size (or the whole scan), one table row each."""
+    V, F, name = sized_scan(args, V, F)
     centroids = V[F].mean(axis=1)
     threads = os.environ.get("OMP_NUM_THREADS", "all")
     print(f"| scan | vertices | region faces | seconds | attempts (rejected) | stop | region E before -> after | outside kept | load, threads |")
@@ -219,12 +224,7 @@ def cgal_table(args, V, F):
     fair() on the same moving vertices (bench/cgal_region_fair), one Markdown row each: wall seconds
     (elastica.fair's call; CGAL's fair() call alone), stop, attempts, the report's resolution gap,
     the whole mesh's energy (elastica.curvature's) of the input and of both outputs."""
-    if args.loop:
-        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-        from loop_energy import loop_subdivide
-        for _ in range(args.loop):
-            V, F = loop_subdivide(V, F)
-    name = os.path.basename(args.mesh) + (f" Loop x{args.loop}" if args.loop else "")
+    V, F, name = sized_scan(args, V, F)
     centroids = V[F].mean(axis=1)
     e = np.linalg.norm(V[F[:, 1]] - V[F[:, 0]], axis=1).mean()
     threads = os.environ.get("OMP_NUM_THREADS", "all")
