@@ -25,6 +25,13 @@ Loop-subdivided --loop times (bench/loop_energy.py's Loop step; closed scans onl
 whole scan (its border fixed). One Markdown table row per run, with the load average before it:
 
   PYTHONPATH=build/python bench/region_sweep.py /work/zoo/data/meshes/man.off --sizes 1000,10000,50000 --loop 2
+
+With --sizes and --cgal (docs/benchmarks.md, "Regions beside CGAL"), each region (with
+--region-noise, N(0, that * mean edge) on its vertices) is also faired by CGAL's fair() on the same
+moving vertices, and the table has both times, stop, attempts, resolution gap and whole-mesh energies:
+
+  PYTHONPATH=build/python bench/region_sweep.py ~/.cache/elastica/cgal-data-*/meshes/armadillo.off \
+      --sizes 1000,10000,50000 --region-noise 0.1 --max-seconds 120 --cgal build/bin/cgal_region_fair
 """
 import argparse
 import json
@@ -157,14 +164,19 @@ def again(V, F, sel, V3, F3, rep, max_seconds):
           f"region E {e1:.4g} -> {e2:.4g} ({100 * (e2 / e1 - 1):+.1f} %) -->", flush=True)
 
 
-def sizes_table(args, V, F):
-    """One region per size (or the whole scan), one table row each."""
+def sized_scan(args, V, F):
+    """The scan --sizes runs on (Loop-subdivided --loop times) and its name in the table."""
     if args.loop:
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
         from loop_energy import loop_subdivide
         for _ in range(args.loop):
             V, F = loop_subdivide(V, F)
-    name = os.path.basename(args.mesh) + (f" Loop x{args.loop}" if args.loop else "")
+    return V, F, os.path.basename(args.mesh) + (f" Loop x{args.loop}" if args.loop else "")
+
+
+def sizes_table(args, V, F):
+    """One region per size (or the whole scan), one table row each."""
+    V, F, name = sized_scan(args, V, F)
     centroids = V[F].mean(axis=1)
     threads = os.environ.get("OMP_NUM_THREADS", "all")
     print(f"| scan | vertices | region faces | seconds | attempts (rejected) | stop | region E before -> after | outside kept | load, threads |")
@@ -207,6 +219,56 @@ def sizes_table(args, V, F):
             elastica.write(os.path.join(args.save, f"{size}.ply"), V3, F3)
 
 
+def cgal_table(args, V, F):
+    """--sizes with --cgal: each region faired by elastica.fair (its limit shape) and by CGAL's
+    fair() on the same moving vertices (bench/cgal_region_fair), one Markdown row each: wall seconds
+    (elastica.fair's call; CGAL's fair() call alone), stop, attempts, the report's resolution gap,
+    the whole mesh's energy (elastica.curvature's) of the input and of both outputs."""
+    V, F, name = sized_scan(args, V, F)
+    centroids = V[F].mean(axis=1)
+    e = np.linalg.norm(V[F[:, 1]] - V[F[:, 0]], axis=1).mean()
+    threads = os.environ.get("OMP_NUM_THREADS", "all")
+    print("| scan | vertices | region faces | elastica s | stop | attempts | gap | CGAL s | ratio | "
+          "whole-mesh E: input / elastica / CGAL | load, threads |")
+    print("|---|---:|---:|---:|---|---:|---:|---:|---:|---|---|")
+    energy = lambda V_, F_: elastica.curvature(V_, F_)["energy"]  # noqa: E731
+    with tempfile.TemporaryDirectory() as tmp:
+        for size in args.sizes.split(","):
+            rng = np.random.default_rng(args.seed)
+            p = V[rng.integers(len(V))]
+            sel = np.argsort(np.linalg.norm(centroids - p, axis=1), kind="stable")[:int(size)]
+            Vin = V.copy()
+            verts = np.unique(F[sel])
+            Vin[verts] += rng.normal(0, args.region_noise * e, (len(verts), 3))
+            load = os.getloadavg()[0]
+            t0 = time.time()
+            V3, F3, rep = elastica.fair(Vin, F, sel, feature_size=0, scheme=args.scheme, max_seconds=args.max_seconds)
+            secs = time.time() - t0
+            mesh_in, region_in, cgal_out = (os.path.join(tmp, n) for n in ("in.ply", "region.txt", "cgal.ply"))
+            elastica.write(mesh_in, Vin, F)
+            np.savetxt(region_in, sel, fmt="%d")
+            out = subprocess.run([args.cgal, mesh_in, region_in, cgal_out], capture_output=True, text=True)
+            try:
+                cg = json.loads(out.stdout.strip().splitlines()[-1])
+                Vc, Fc = elastica.read(cgal_out)
+                e_cgal = f"{energy(np.asarray(Vc), np.asarray(Fc)):.5g}" + ("" if cg["ok"] else " (failed)")
+                cgal_s, ratio = f"{cg['seconds']:.3f}", f"{secs / max(cg['seconds'], 1e-9):.0f}"
+            except Exception:  # noqa: BLE001 - a sweep reports every failure and goes on
+                cgal_s, ratio, e_cgal = "error", "-", (out.stderr.strip() or "no output")[:60]
+            stop = rep["stop"] + (f" ({rep['refused_because']})" if rep.get("refused_because") else "")
+            print(f"| {name} | {len(V)} | {len(sel)} | {secs:.2f} | {stop} | {rep['steps']} | "
+                  f"{100 * rep.get('region_resolution_gap', float('nan')):+.1f} % | {cgal_s} | {ratio} | "
+                  f"{energy(Vin, F):.5g} / {energy(np.asarray(V3), np.asarray(F3)):.5g} / {e_cgal} | "
+                  f"{load:.1f}, {threads} |", flush=True)
+            print(f"<!-- runs {rep.get('region_runs', 1)}, scheme {rep['scheme']}; stages (vertices, attempts, E): "
+                  f"{[(st['vertices'], st['steps'], round(st['energy'], 4)) for st in rep['stages']]} -->", flush=True)
+            if args.save:
+                os.makedirs(args.save, exist_ok=True)
+                elastica.write(os.path.join(args.save, f"{size}.ply"), V3, F3)
+                os.replace(cgal_out, os.path.join(args.save, f"{size}-cgal.ply"))
+                elastica.write(os.path.join(args.save, f"{size}-in.ply"), Vin, F)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("mesh")
@@ -225,10 +287,15 @@ def main():
     ap.add_argument("--check-outside", action="store_true", help="with --sizes: check the faces off the region")
     ap.add_argument("--again", type=float, default=0, help="with --sizes: fair each output's region again with "
                     "this max_seconds and print its energy (is a 'converged' kept by a longer run?)")
+    ap.add_argument("--cgal", default="", help="with --sizes: bench's cgal_region_fair binary; each region is "
+                    "faired by CGAL's fair() too, and the table compares them")
+    ap.add_argument("--region-noise", type=float, default=0, help="with --cgal: N(0, this * mean edge) on the region")
     args = ap.parse_args()
 
     V, F = elastica.read(args.mesh)
     V, F = np.asarray(V, dtype=float), np.asarray(F)
+    if args.sizes and args.cgal:
+        return cgal_table(args, V, F)
     if args.sizes:
         return sizes_table(args, V, F)
     e = np.linalg.norm(np.concatenate([V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 1]], V[F[:, 0]] - V[F[:, 2]]]), axis=1).mean()

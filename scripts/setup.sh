@@ -39,6 +39,7 @@ PACKAGES=(
   f3d                                                  # headless renders for docs (bench/render_mesh.sh)
   gnuplot-nox jq                                       # energy curves from the JSON reports (bench/paper_figures.sh)
   time                                                 # /usr/bin/time -v: wall time and peak memory (bench/io_bench.sh)
+  libcgal-dev                                          # CGAL's fill and fair() beside ours in bench/ (never linked by Elastica)
 )
 
 log() { printf 'setup: %s\n' "$*" >&2; }
