@@ -84,6 +84,7 @@ fi
 run fair_big_vector      fair big.ply -o fair_big_vector.ply --feature-size 0 --max-steps 4
 run fair_big_semi        fair big.ply -o fair_big_semi.ply --feature-size 0 --scheme semi-implicit --max-steps 4
 run fair_big_explicit    fair big.ply -o fair_big_explicit.ply --feature-size 0 --scheme explicit --max-steps 40
+run fair_big_amount      fair big.ply -o fair_big_amount.ply   # the default amount: incomplete-Cholesky CG
 rm -f big.ply
 run curvature            curvature "$root/data/bunny.ply" -o curvature.ply
 run curvature_paper      curvature "$root/data/bunny.ply" -o curvature_paper.ply --area barycentric --lambda-fix --ascii

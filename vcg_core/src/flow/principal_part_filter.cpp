@@ -1,3 +1,4 @@
+#include "flow/incomplete_cholesky_cg.h"
 #include "flow/principal_part_filter.h"
 #include "flow/semi_implicit_system.h"
 #include "flow/spd_solver.h"
@@ -9,10 +10,49 @@
 #include <cmath>
 
 namespace elastica {
+namespace {
+
+// From this many rows on, the steps are solved by conjugate gradients preconditioned with an
+// incomplete Cholesky factorisation (flow/incomplete_cholesky_cg.h) until a solve misses the
+// tolerance within kIncompleteIterations (slivers), and by the matrix's Cholesky factorisation
+// from then on. Below, the factorisation costs little, and small meshes keep its bits. The
+// tolerance is the residual's, relative to the right-hand side's: rounding's order for a matrix
+// within a few units of its diagonal. Measurements: docs/benchmarks.md, "Scale".
+constexpr int kIncompleteFromRows = 20000;
+constexpr int kIncompleteIterations = 40;
+constexpr double kIncompleteTolerance = 1e-12;
+
+}  // namespace
 
 struct PrincipalPartFilter::Solver {
   SemiImplicitSystem system;
+  IncompleteCholeskyCg incomplete;
   SpdSolver spd;
+  bool direct = true;  // solve with spd's factorisation (else with `incomplete`)
+
+  // Factorises the matrix for direct solves from now on; false if it is not positive definite.
+  bool factorize() {
+    direct = true;
+    spd.analyzePattern(system.matrix());
+    return spd.factorize(system.matrix());
+  }
+  // The step's displacements for the columns of b; false if they are not finite.
+  bool solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& displacement) {
+    if (!direct) {
+      // A column that misses the tolerance ends the iterations there (the first, if any does).
+      if (incomplete.solve(b, displacement, kIncompleteTolerance, kIncompleteIterations) >= 0) return true;
+      if (!factorize()) return false;
+    }
+    displacement.resize(b.rows(), b.cols());
+    Eigen::VectorXd column, delta;
+    for (Eigen::Index c = 0; c < b.cols(); ++c) {  // one column at a time, as before the iterations
+      column = b.col(c);
+      spd.solve(column, delta);
+      if (!delta.allFinite()) return false;
+      displacement.col(c) = delta;
+    }
+    return true;
+  }
 };
 
 PrincipalPartFilter::PrincipalPartFilter() = default;
@@ -31,8 +71,11 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau) {
   tau_ = tau;
   solver_ = std::make_unique<Solver>();
   solver_->system.assembleMatrix(topo, edgeWeight_, vertexArea_, roles.active, freeIndex_, rows, 1.0, 0.5 * tau);
-  solver_->spd.analyzePattern(solver_->system.matrix());
-  return solver_->spd.factorize(solver_->system.matrix());
+  if (rows >= kIncompleteFromRows && solver_->incomplete.compute(solver_->system.matrix())) {
+    solver_->direct = false;
+    return true;
+  }
+  return solver_->factorize();
 }
 
 bool PrincipalPartFilter::step(FlowState& state) {
@@ -48,14 +91,8 @@ bool PrincipalPartFilter::step(FlowState& state) {
   Eigen::MatrixXd b(rows, 3);
   for (int v = 0; v < nv; ++v)
     if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = (-0.5 * tau_ * vertexArea_[v]) * bilaplacian_[v].transpose();
-  Eigen::VectorXd column(rows), delta(rows);
-  Eigen::MatrixXd displacement(rows, 3);
-  for (int c = 0; c < 3; ++c) {
-    column = b.col(c);
-    solver_->spd.solve(column, delta);
-    if (!delta.allFinite()) return false;
-    displacement.col(c) = delta;
-  }
+  Eigen::MatrixXd displacement;
+  if (!solver_->solve(b, displacement)) return false;
   for (int v = 0; v < nv; ++v)
     if (freeIndex_[v] >= 0) x[v] += displacement.row(freeIndex_[v]).transpose();
   state.invalidate();
