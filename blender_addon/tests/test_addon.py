@@ -336,7 +336,11 @@ def test_cancel_through_the_progress_callback_leaves_the_mesh():
 
 def test_imports_under_factory_startup_from_the_add_on_folder():
     # install.sh puts the module beside the add-on: a Blender started with --factory-startup (no user
-    # modules folder on the path, no PYTHONPATH) imports it from there.
+    # modules folder on the path, no PYTHONPATH) imports it from there. The legacy add-on's layout only:
+    # an installed Extension (scripts/blender5.sh) carries the module inside its own package.
+    if ADDON != "elastica_blender":
+        print("  (legacy add-on layout: not run for the Extension " + ADDON + ")")
+        return
     import shutil
     import subprocess
     import tempfile

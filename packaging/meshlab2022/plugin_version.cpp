@@ -5,7 +5,8 @@
 //
 // Prints the plugin's baked MeshLab version and precision (MeshLabPlugin::getMLVersion(), compiled into
 // the plugin from MESHLAB_VERSION and MESHLAB_SCALAR) and the host's version, read from the loaded
-// libmeshlab-common (meshlab::meshlabCompleteVersion(), not inline: the library's own). Exit 0 only when
+// libmeshlab-common where it exports one (meshlab::meshlabCompleteVersion(), 2025.07), else the
+// version of the host's source tree this tool is built against (2022.02 exports none). Exit 0 only when
 // the first 6 characters of both versions agree (checkPlugin's rule), the plugin's precision is the
 // host build's (the argument: Debian's MeshLab is float) and the library's checkPlugin accepts the
 // file; 1 otherwise, with the reason (also when the plugin does not load at all, as a plugin built
@@ -31,7 +32,11 @@ int main(int argc, char** argv) {
   QCoreApplication app(argc, argv);
   const QString file = QFileInfo(QString::fromLocal8Bit(argv[1])).absoluteFilePath();
   const bool hostDouble = std::strcmp(argv[2], "double") == 0;
+#ifdef ELASTICA_LIBRARY_VERSION
   const std::string host = meshlab::meshlabCompleteVersion();
+#else
+  const std::string host = meshlab::meshlabVersion();
+#endif
   std::printf("host: MeshLab %s (libmeshlab-common), %s precision\n", host.c_str(), argv[2]);
 
   QPluginLoader loader(file);
