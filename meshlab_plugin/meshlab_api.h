@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The MeshLab plugin API the plugin is built for, chosen at configure time (CMake
 // ELASTICA_MESHLAB_API, passed to the compiler and to moc as the macro of the same name):
 //   2020  MeshLab 2020.09 (Debian 12): MeshFilterInterface in common/interfaces.h

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Blender add-on as an Extension, built, validated, installed and run in Blender 5.2 (Debian sid's
 # blender 5.2.2, Python 3.14), on a Debian 12 machine (as root):
 #
@@ -21,7 +22,7 @@ cd "$(dirname "$0")/.."
 src=$PWD
 shot=
 if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
-[[ $# -eq 0 ]] || { sed -n '2,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+[[ $# -eq 0 ]] || { sed -n '3,20p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 [[ $(id -u) -eq 0 ]] || { echo "blender5: run as root (debootstrap and chroot)" >&2; exit 1; }
 t0=$SECONDS
 step() { printf '\n== blender5 [%4d s] %s\n' $((SECONDS - t0)) "$*"; }

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A cached Debian root for the host scripts (scripts/meshlab2025.sh, scripts/blender5.sh): sourced, not run.
 #
 #   source scripts/debian-root.sh

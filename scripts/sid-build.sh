@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Debian sid root of scripts/meshlab2025.sh and scripts/blender5.sh, and this tree built in it:
 # sourced after scripts/debian-root.sh, with $src (this tree), $cache and $root set.
 #

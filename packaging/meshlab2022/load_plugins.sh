@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # MeshLab 2022.02's (or, with MESHLAB_TITLE="MeshLab 2025", 2025.07's) Help > Plugin Info > Load Plugins, done as a user does it, on PLUGIN.so; the screen
 # after loading (the plugin list) saved as OUT.png. MeshLab copies the file into its per-user
 # extra-plugins folder. scripts/meshlab2022.sh runs it in the trixie root, under Xvfb.

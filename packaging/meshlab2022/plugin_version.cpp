@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // plugin_version: is PLUGIN built for the MeshLab of this libmeshlab-common? MeshLab 2022.02 and later
 // load a plugin only if its baked version and precision match their own (PluginManager::checkPlugin).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // run_filter: an .mlx script applied in MeshLab 2022.02 (and later, same interface) as MeshLab itself
 // applies it, without MeshLab's window (2022.02 has no meshlabserver). Built and run in the trixie root
 // by scripts/meshlab2022.sh.

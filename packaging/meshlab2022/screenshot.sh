@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # MeshLab 2022.02's (MESHLAB_TITLE="MeshLab 2025": 2025.07's) window with MESH loaded and Filters > Smoothing, Fairing and Deformation open,
 # saved as OUT.png (scripts/meshlab2022.sh --screenshot runs it in the trixie root, under Xvfb).
 #   screenshot.sh MESH OUT.png

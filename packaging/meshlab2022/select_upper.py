@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """An ASCII PLY (elastica generate --ascii) with its positions rounded to float, as MeshLab keeps them,
 and its faces above z = 0 selected as MeshLab's face flags (vcg's SELECTED bit, 0x20): the selected
 region of scripts/meshlab2025.sh.   python3 select_upper.py IN.ply OUT.ply"""
