@@ -94,6 +94,8 @@ def step():
             return 1.0
         if tick == 3:
             bpy.ops.screen.screenshot(filepath=out)
+            if os.environ.get("ELASTICA_X_SCREENSHOT"):  # the X server's picture too (Blender 5.2's own came out black)
+                subprocess.run(["import", "-window", "root", os.environ["ELASTICA_X_SCREENSHOT"]], check=True)
             return 0.5
         if tick == 4:
             assert os.path.getsize(out) > 10000, "screenshot missing or empty"
