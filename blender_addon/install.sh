@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Installs the Blender add-on elastica_blender for the current user (no root) and enables it.
 #
 #   blender_addon/install.sh BUILD_DIR

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Where scripts/setup.sh keeps what it fetches: $ELASTICA_CACHE_DIR, then
 # ${XDG_CACHE_HOME}/elastica, then $HOME/.cache/elastica (in that order of preference).
 function(elastica_cache_roots out)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # FindCHOLMOD: SuiteSparse's supernodal Cholesky (Debian libsuitesparse-dev), as the imported
 # target CHOLMOD::CHOLMOD. Installed beside elasticaConfig.cmake so that a consumer of the static
 # elastica::core finds the same library the package was built with.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Locates the real sample meshes that scripts/setup.sh unpacks from Debian's libcgal-demo package
 # (elephant.off, elephant-with-holes.off, bunny00.off) into its cache.
 #

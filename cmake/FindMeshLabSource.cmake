@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Locates the source tree of Debian's `meshlab` source package, fetched by scripts/setup.sh.
 #
 # Inputs (cache variables, all optional):

@@ -86,7 +86,7 @@ void addParameters(ea::FilterId id, const CMeshO& m, RichParameterList& params) 
         break;
       }
       case ea::ParamType::AbsPerc:  // the length; the dialog shows it as a % of the diagonal too
-        params.addParam(RichAbsPerc(name, float(p.defaultValue), 0.f, float(facts.diagonal), label, tip));
+        params.addParam(RichLength(name, float(p.defaultValue), 0.f, float(facts.diagonal), label, tip));
         break;
     }
   }

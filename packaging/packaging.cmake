@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Debian packages of the build (CPack's DEB generator), one per face:
 #
 #   elastica                 the command, /usr/bin/elastica

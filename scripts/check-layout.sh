@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Checks the "Layout" section of docs/architecture.md against the tree (run by ctest as readme_layout):
 #  - every path it names (a word with a slash) exists;
 #  - every top-level folder, every folder of vcg_core/ and every source file of the core's public

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # CI's extra step, run by .ci/run after the README's test command (which builds build/ and runs
 # the test suite):
 #   1. the whole test suite again, built with AddressSanitizer + UndefinedBehaviorSanitizer

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The Debian packages, built, checked, installed, used and removed (CI; run as root or with
 # password-less sudo, after the README's build into BUILD_DIR):
 #

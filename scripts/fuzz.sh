@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Fuzz the mesh readers and the flow with libFuzzer (clang, AddressSanitizer, UBSan).
 #
 #   scripts/fuzz.sh [SECONDS] [TARGET...]

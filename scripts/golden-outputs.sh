@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Behaviour check for refactorings: runs a fixed set of `elastica` commands (every flow, both
 # schemes, subdivision, selection, sliding boundary, edge flips, fill and its stages, curvature,
 # subdivide, .mlx scripts) on bundled and generated meshes, and writes each output mesh and the

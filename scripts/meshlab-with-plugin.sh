@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Run Debian's MeshLab with the Elastica plugin, without installing anything into /usr.
 #
 #   scripts/meshlab-with-plugin.sh [--prefix DIR] PLUGIN.so                  set up DIR only
@@ -23,7 +24,7 @@ if [[ "${1:-}" == --prefix ]]; then
   shift 2
 fi
 case "${1:-}" in
-  -h|--help|"") sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; [[ -n "${1:-}" ]]; exit $? ;;
+  -h|--help|"") sed -n '3,16p' "$0" | sed 's/^# \{0,1\}//'; [[ -n "${1:-}" ]]; exit $? ;;
 esac
 plugin=$(realpath -e -- "$1") || die "plugin '$1' not found (build it: cmake --build build --target filter_elastica)"
 shift

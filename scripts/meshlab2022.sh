@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The MeshLab plugin built for, and run in, Debian 13 (trixie)'s MeshLab 2022.02, on a Debian 12 machine
 # (as root):
 #
@@ -30,7 +31,7 @@ cd "$(dirname "$0")/.."
 src=$PWD
 shot=
 if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
-[[ $# -eq 0 ]] || { sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+[[ $# -eq 0 ]] || { sed -n '3,27p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 [[ $(id -u) -eq 0 ]] || { echo "meshlab2022: run as root (debootstrap and chroot)" >&2; exit 1; }
 
 t0=$SECONDS

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Same input, same output: runs scripts/golden-outputs.sh at each thread count given (default 1
 # and 2) and fails on any byte that differs between them (meshes and transcripts). CI runs it.
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Elastica set-up from Debian packages only.
 #
 #   scripts/setup.sh            install missing binary packages, fetch MeshLab's source trees
@@ -48,7 +49,7 @@ die() { printf 'setup: error: %s\n' "$*" >&2; exit 1; }
 check_only=0
 case "${1:-}" in
   --check) check_only=1 ;;
-  -h|--help) sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+  -h|--help) sed -n '3,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
   "") ;;
   *) die "unknown option '$1' (try --help)" ;;
 esac

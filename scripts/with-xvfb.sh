@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs a command under a private Xvfb whose display number the X server itself picked.
 #
 #   scripts/with-xvfb.sh [-s "XVFB ARGS"] COMMAND [ARGS...]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The add-on's ctest entries; exit 77 (ctest SKIP_RETURN_CODE) when Blender (or Xvfb) is missing.
 #   run.sh headless            test_addon.py in blender -b (PYTHONPATH: the module and the add-on)
 #   run.sh gui OUT.png         shot.py in Blender's window under Xvfb, the screenshot into OUT.png

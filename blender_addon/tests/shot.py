@@ -17,7 +17,12 @@ import time
 import traceback
 
 import addon_utils
+import importlib
 import bpy
+
+# The add-on's module: the legacy add-on (Blender 3.4, ctest) or an installed Extension's
+# (bl_ext.user_default.elastica_blender, scripts/blender5.sh in Blender 5.2).
+ADDON = os.environ.get("ELASTICA_ADDON_MODULE", "elastica_blender")
 import numpy as np
 
 out = sys.argv[sys.argv.index("--") + 1]
@@ -65,7 +70,7 @@ def step():
         state["tick"] += 1
         tick = state["tick"]
         if tick == 1:
-            addon_utils.enable("elastica_blender", default_set=True, handle_error=None)
+            addon_utils.enable(ADDON, default_set=True, handle_error=None)
             ob, state["before"] = noisy_sphere(4, 1.2, 1)
             with bpy.context.temp_override(**view3d()):
                 bpy.ops.ed.undo_push(message="noisy sphere")
@@ -89,6 +94,8 @@ def step():
             return 1.0
         if tick == 3:
             bpy.ops.screen.screenshot(filepath=out)
+            if os.environ.get("ELASTICA_X_SCREENSHOT"):  # the X server's picture too (Blender 5.2's own came out black)
+                subprocess.run(["import", "-window", "root", os.environ["ELASTICA_X_SCREENSHOT"]], check=True)
             return 0.5
         if tick == 4:
             assert os.path.getsize(out) > 10000, "screenshot missing or empty"
@@ -103,7 +110,7 @@ def step():
             with bpy.context.temp_override(**view3d()):
                 result = bpy.ops.mesh.elastica_fair('INVOKE_DEFAULT', True, scheme="explicit", feature_size=0, max_steps=10**9)
             assert result == {'RUNNING_MODAL'}, result
-            from elastica_blender import operators
+            operators = importlib.import_module(ADDON + ".operators")
             state["job"] = operators.running_jobs[-1]
             return 1.5
         if tick == 5:
@@ -112,7 +119,7 @@ def step():
             state["esc"] = time.perf_counter()
             return 0.5
         if tick == 6:
-            from elastica_blender import operators
+            operators = importlib.import_module(ADDON + ".operators")
             if not wait_for(lambda: not operators.running_jobs, "the cancel", ticks=10):
                 state["tick"] -= 1
                 return 0.5

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# MeshLab 2022.02's Help > Plugin Info > Load Plugins, done as a user does it, on PLUGIN.so; the screen
+# SPDX-License-Identifier: GPL-3.0-or-later
+# MeshLab 2022.02's (or, with MESHLAB_TITLE="MeshLab 2025", 2025.07's) Help > Plugin Info > Load Plugins, done as a user does it, on PLUGIN.so; the screen
 # after loading (the plugin list) saved as OUT.png. MeshLab copies the file into its per-user
 # extra-plugins folder. scripts/meshlab2022.sh runs it in the trixie root, under Xvfb.
 #   load_plugins.sh PLUGIN.so OUT.png
@@ -20,7 +21,7 @@ xdotool getdisplaygeometry >/dev/null 2>&1 || fail "no X server on display ${DIS
 meshlab >/tmp/meshlab-load.log 2>&1 &
 pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
-main=$(wait_window "MeshLab 2022" 30) || fail "no MeshLab window"
+main=$(wait_window "${MESHLAB_TITLE:-MeshLab 2022}" 30) || fail "no MeshLab window"
 xdotool windowsize "$main" 1600 900 windowmove "$main" 0 0
 sleep 2
 xdotool windowfocus "$main"

@@ -1,8 +1,9 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // run_filter: an .mlx script applied in MeshLab 2022.02 (and later, same interface) as MeshLab itself
 // applies it, without MeshLab's window (2022.02 has no meshlabserver). Built and run in the trixie root
 // by scripts/meshlab2022.sh.
 //
-//   run_filter PLUGIN_DIR[:PLUGIN_DIR...] IN OUT SCRIPT.mlx [REFERENCE TOLERANCE]
+//   run_filter PLUGIN_DIR[:PLUGIN_DIR...] IN OUT SCRIPT.mlx [REFERENCE TOLERANCE [--measure]]
 //
 // - Loads every plugin of each PLUGIN_DIR (MeshLab's plugin folder, and its per-user folder of plugins
 //   added with Load Plugins) with MeshLab's own PluginManager, which checks each plugin's MeshLab
@@ -14,7 +15,9 @@
 // - Prints the filters' log. With REFERENCE (e.g. `elastica run`'s output on the same script and
 //   input): exit 1 unless OUT has the same vertex and face counts and faces, and every vertex is
 //   within TOLERANCE (a fraction of the bounding-box diagonal) of REFERENCE's, and some vertex moved
-//   from IN (prints both distances).
+//   from IN (prints both distances). With --measure (a script that only measures, as the curvature
+//   filter): no vertex may move, and every vertex's quality must be within TOLERANCE of the largest
+//   |quality| of REFERENCE's (or, where MeshLab reads no quality from REFERENCE, every colour equal).
 #include <common/filterscript.h>
 #include <common/globals.h>
 #include <common/ml_document/mesh_document.h>
@@ -57,11 +60,34 @@ double distance(const CMeshO& a, const CMeshO& b) {
   return d / double(a.bbox.Diag());
 }
 
+// Per-vertex quality (the curvature filter's H) of b against a's, over a's largest |quality|.
+bool qualityAgrees(const CMeshO& a, const CMeshO& b, double tolerance) {
+  if (!a.vert.IsQualityEnabled() && a.vert.IsColorEnabled() && b.vert.IsColorEnabled()) {
+    // MeshLab's PLY reader leaves a double "quality" property unread: compare the colour ramp by H.
+    size_t differ = 0;
+    for (size_t v = 0; v < a.vert.size(); ++v) differ += a.vert[v].cC() != b.vert[v].cC();
+    std::printf("colour by H vs the reference: %zu of %zu vertices differ\n", differ, a.vert.size());
+    return differ == 0;
+  }
+  if (!a.vert.IsQualityEnabled() || !b.vert.IsQualityEnabled()) {
+    std::printf("FAIL: no per-vertex quality or colour to compare\n");
+    return false;
+  }
+  double scale = 0, d = 0;
+  for (size_t v = 0; v < a.vert.size(); ++v) {
+    scale = std::max(scale, std::abs(double(a.vert[v].cQ())));
+    d = std::max(d, std::abs(double(a.vert[v].cQ()) - double(b.vert[v].cQ())));
+  }
+  std::printf("quality vs the reference: %.2e of its largest |quality| %.3g (tolerance %.0e)\n", d / scale, scale, tolerance);
+  return scale > 0 && d <= tolerance * scale;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5 && argc != 7) {
-    std::fprintf(stderr, "usage: run_filter PLUGIN_DIR[:PLUGIN_DIR...] IN OUT SCRIPT.mlx [REFERENCE TOLERANCE]\n");
+  const bool measure = argc == 8 && std::string(argv[7]) == "--measure";
+  if (argc != 5 && argc != 7 && !measure) {
+    std::fprintf(stderr, "usage: run_filter PLUGIN_DIR[:PLUGIN_DIR...] IN OUT SCRIPT.mlx [REFERENCE TOLERANCE [--measure]]\n");
     return 2;
   }
   QApplication app(argc, argv);
@@ -92,7 +118,7 @@ int main(int argc, char** argv) {
     meshlab::saveMeshWithStandardParameters(QString::fromLocal8Bit(argv[3]), *md.mm());
     std::printf("wrote %s: %d vertices, %d faces\n", argv[3], md.mm()->cm.vn, md.mm()->cm.fn);
 
-    if (argc == 7) {
+    if (argc >= 7) {
       MeshDocument in, ref;
       const CMeshO& input = load(in, argv[2])->cm;
       const CMeshO& reference = load(ref, argv[5])->cm;
@@ -112,6 +138,7 @@ int main(int argc, char** argv) {
       std::printf("vs %s: %.2e of the diagonal (tolerance %.0e); vs the input: %s\n", argv[5], same, tolerance,
                   grew ? qUtf8Printable(QString("%1 -> %2 vertices").arg(input.vn).arg(md.mm()->cm.vn))
                        : qUtf8Printable(QString("moved %1 of the diagonal").arg(moved, 0, 'e', 2)));
+      if (measure) return qualityAgrees(reference, md.mm()->cm, tolerance) && moved == 0 && same <= tolerance ? 0 : 1;
       if (!(same <= tolerance) || (!grew && moved < 1e-3)) {
         std::printf("FAIL\n");
         return 1;

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# MeshLab 2022.02's window with MESH loaded and Filters > Smoothing, Fairing and Deformation open,
+# SPDX-License-Identifier: GPL-3.0-or-later
+# MeshLab 2022.02's (MESHLAB_TITLE="MeshLab 2025": 2025.07's) window with MESH loaded and Filters > Smoothing, Fairing and Deformation open,
 # saved as OUT.png (scripts/meshlab2022.sh --screenshot runs it in the trixie root, under Xvfb).
 #   screenshot.sh MESH OUT.png
 set -euo pipefail
@@ -10,7 +11,7 @@ pid=$!
 trap 'kill $pid 2>/dev/null || true' EXIT
 main=
 for _ in $(seq 150); do
-  main=$(xdotool search --name "MeshLab 2022" 2>/dev/null | head -n1) && [[ -n "$main" ]] && break
+  main=$(xdotool search --name "${MESHLAB_TITLE:-MeshLab 2022}" 2>/dev/null | head -n1) && [[ -n "$main" ]] && break
   kill -0 $pid 2>/dev/null || { cat /tmp/meshlab.log >&2; fail "meshlab exited"; }
   sleep 0.2
 done
