@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // add_noise IN OUT AMOUNT SEED: a noisy copy of a mesh for the denoising table (bench/denoise.sh):
 // every vertex moved by a vector drawn uniformly from the ball of radius AMOUNT × the mesh's mean
 // edge length (3-D noise: tangential as well as normal, as a scanner's is). Binary PLY.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """amount_sweep.py [--build DIR] [--noise "0.1 0.3"] [--edges "2 3 4"] MESH...: how the fairing
 amount's best size depends on a scan's roughness, to size the default (app/fairing_amount.h). For
 each scan and noise level (bench/add_noise: 3-D, uniform in a ball of NOISE x the mean edge, seed 1)

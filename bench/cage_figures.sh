@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # "Cages from elsewhere": the hand-written polygon cages of data/cages/ (none made by
 # `elastica generate`) faired by the default pipeline (`elastica fair CAGE --subdivide 3`: auto's
 # scheme with the working-resolution floor, remeshing, flips and the embedding guard), rendered coloured by mean curvature beside the cage, with a table of genus, energy,
@@ -26,7 +27,7 @@ while [[ $# -gt 0 ]]; do
     --docs) docs=$2; shift 2 ;;
     --work) work=$2; shift 2 ;;
     --levels) levels=$2; shift 2 ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '3,19p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) printf 'cage_figures: unknown option %s (try --help)\n' "$1" >&2; exit 2 ;;
   esac
 done

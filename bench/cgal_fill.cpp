@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "cgal_fill.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CGAL's hole filling (Polygon Mesh Processing: triangulate_refine_and_fair_hole), for comparison
 // only: built when Debian's libcgal-dev is present, never a runtime dependency of Elastica.
 #pragma once

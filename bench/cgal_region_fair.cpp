@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // cgal_region_fair MESH REGION OUT: CGAL's Polygon_mesh_processing::fair() on a selected region,
 // for comparison with elastica.fair(V, F, region) (bench/region_sweep.py --cgal). REGION holds
 // face indices (whitespace-separated). The moving vertices are those whose faces are all in the

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """default_amount.py MESH...: the default `fair` (a fairing amount sized from the mesh,
 app/fairing_amount.h) on whole meshes, one row each: the amount in mean edge lengths, how often it
 was halved, how far the surface moved (RMS and largest, as fractions of the bounding-box diagonal),

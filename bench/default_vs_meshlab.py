@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """default_vs_meshlab.py [--build DIR] [--noise "0 0.3"] [--pictures DIR] MESH...: the default
 `fair` (no options: the amount sized from the scan's edges and roughness, app/fairing_amount.h)
 beside MeshLab's own default smoothing run by Debian's meshlabserver: Taubin Smooth (lambda 0.5,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Elastica's fairing amount (`fair --feature-size F`) as a denoiser, beside MeshLab's Taubin and HC
 # Laplacian smoothing run by Debian's meshlabserver, on libcgal-demo scans with 3-D vertex noise
 # (bench/add_noise: uniform in a ball of AMOUNT × the mean edge length). Distances are RMS, from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where a fill's time goes: fills the holes of one mesh (a holed scan written by
 // `restoration_sweep --write-dir`) with `elastica fill`'s defaults, several times in one process,
 // and prints each run's time (wall, and the process's CPU time: steadier on a loaded machine) and

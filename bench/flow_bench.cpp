@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The performance figures of docs/benchmarks.md (written by bench/run_benchmarks.sh), as Markdown
 // tables on stdout:
 //

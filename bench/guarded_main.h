@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The main() of a benchmark tool: `--help` prints its usage, and a bad argument or an unreadable
 // mesh ends with one line on stderr and exit status 1 instead of an abort on an uncaught exception.
 #pragma once

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `elastica fair --feature-size 0` (to the limit shape) on closed meshes with handles (issue 40), one run per row: attempts
 # (refused), seconds, stop, E, E of the output Loop-subdivided once (bench/loop_energy.py) and
 # its gap, the most vertices a stage reached (and the output's, if fewer), faces crossing after

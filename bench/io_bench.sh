@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # I/O benchmark (not a test): `elastica curvature IN.ply -o OUT.ply` end to end (read, check,
 # H/K/E, write) against Debian's `meshlabserver -i IN.ply -o OUT.ply` (read + write, under
 # xvfb-run: it needs an X server, whose start-up is in its time) on the same binary PLY, at

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """loop_energy.py MESH [LEVELS]: the total curvature energy E of MESH and of its Loop subdivisions.
 
 A check that a faired mesh resolves its shape. Loop's limit surface is smooth, so where the mesh

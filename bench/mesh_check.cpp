@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // mesh_check MESH...: the independent measures of the cage figures (bench/cage_figures.sh), one
 // JSON line per mesh: vertices, faces, genus (from the Euler characteristic of a closed mesh),
 // total curvature energy (mixed and barycentric areas), faces crossing another face (vcglib's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // mesh_distance A B: how far two surfaces are apart, both ways, for the denoising table
 // (bench/denoise.sh): the RMS and largest distance from points sampled on A's faces to B's surface,
 // and from B's to A's, each also as a fraction of B's bounding-box diagonal. One JSON line.

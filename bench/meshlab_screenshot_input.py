@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """meshlab_screenshot_input.py SCAN OUT_DIR: the inputs of bench/meshlab_screenshots.sh. Writes
 OUT_DIR/lion_head.ply (the scan as ASCII PLY) and OUT_DIR/lion_head_region.ply: the 1,000 faces whose
 centroids are nearest a vertex of the cheek that MeshLab shows first, the vertices of the 500 nearest moved by

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Screenshots of the fairing filter in Debian's MeshLab GUI for docs/meshlab.md: a scan before and
 # after the filter at its dialog's defaults, and a scan with a selected, noisy region before and
 # after. The meshes are libcgal-demo's lion head (an open scan) from the setup cache; the region is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Throughput of one geometry + curvature pass (what every explicit flow step recomputes),
 // in vertices per second, on icospheres of 10 k, 41 k and 164 k vertices.
 #include <elastica/curvature.h>

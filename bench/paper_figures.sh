@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The paper's Figs. 5–7 from real runs: a coarse tubular cage faired by the bilaplacian flow, the
 # Laplacian-of-mean-curvature flow and the discrete elastica flow, coarse to fine (one linear 1-to-4
 # subdivision between two stages), rendered coloured by mean curvature, with energy-versus-time
@@ -27,7 +28,7 @@ while [[ $# -gt 0 ]]; do
     --work) work=$2; shift 2 ;;
     --seconds) seconds=$2; shift 2 ;;
     --lmc-steps) lmc_steps=$2; shift 2 ;;
-    -h|--help) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '3,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) printf 'paper_figures: unknown option %s (try --help)\n' "$1" >&2; exit 2 ;;
   esac
 done

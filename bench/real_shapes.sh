@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The default `elastica fair` on whole scans from Debian's libcgal-demo (the sample meshes
 # scripts/setup.sh unpacks, plus any other file of that package's data/meshes given by path),
 # beside another scheme, one run each, 60 s limit: attempts (rejected), seconds, stop reason,

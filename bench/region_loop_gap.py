@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """region_loop_gap.py INPUT OUTPUT: is a faired region's output a fair surface, or a faceted lid?
 
 The vector scheme can leave a region as a few large flat faces meeting at creases, whose discrete

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """region_sweep.py [MESH] [options]: fair seeded regions of a scan, the way a MeshLab user selects
 a bumpy part and fairs only that, and check every output (issue 42).
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Renders a mesh to a PNG headless, with Debian's f3d under xvfb-run (for the pictures in docs/).
 #
 #   bench/render_mesh.sh IN.ply OUT.png [--view iso|top|front|side] [--size W,H] [--edges]
@@ -13,7 +14,7 @@
 # (scripts/setup.sh).
 set -euo pipefail
 
-usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '3,15p' "$0" | sed 's/^# \{0,1\}//'; }
 die() { printf 'render_mesh: error: %s\n' "$*" >&2; exit 1; }
 
 [[ $# -ge 2 ]] || { usage >&2; exit 2; }

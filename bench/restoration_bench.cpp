@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's restoration experiment on real data (Figs. 9–10): cut a region out of a mesh, restore
 // it with each method, and measure the patch against the surface that was removed.
 //

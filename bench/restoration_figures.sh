@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The pictures of docs/restoration.md: each real-mesh cut of the restoration benchmark, before and
 # after filling with CGAL's triangulate_refine_and_fair_hole and with elastica, coloured by mean
 # curvature (red low, blue high; same 2–98 % ramp rule for every panel) with the triangle edges,

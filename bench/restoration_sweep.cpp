@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Restoration at every hole size: on one real mesh, cut holes of growing border length around one
 // point (a geodesic disc around the vertex nearest it, as many faces as give the cut's border the
 // requested number of edges), fill each with `elastica fill`'s default and with CGAL's

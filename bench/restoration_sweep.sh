@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # docs/restoration.md's hole-size sweep: on three real scans from Debian's libcgal-demo data
 # archive (the Stanford bunny as CGAL ships it, the armadillo, a refined elephant), geodesic-disc
 # holes of 20–200 border edges in the scans as shipped, of 400 in the scans refined once (1-to-4 at

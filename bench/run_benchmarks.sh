@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Builds the benchmarks, runs them once and writes docs/benchmarks.md: every figure on the page
 # comes from this one run on this machine.
 #

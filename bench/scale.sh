@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The default fair at scale beside Debian's meshlabserver running 100 Taubin steps on the same file
 # (docs/benchmarks.md, "Scale"): a 163,842-vertex icosphere with 3-D vertex noise of half an edge
 # (`elastica generate icosphere --level 7`, bench/add_noise 0.5) and libcgal-demo's

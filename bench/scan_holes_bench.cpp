@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Many holes in a big scan: cut geodesic discs of varied border lengths at spread-out points of a
 // real mesh (refined 1-to-4 at its edge midpoints to the size of a modern scan), fill them all with
 // fillHoles' defaults, and measure the fill's time and peak memory against the holes' size and the

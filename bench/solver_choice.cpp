@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The factorisation choice for a fairing amount's system (flow/principal_part_filter.h) on a whole
 // closed mesh: (M + s² K M⁻¹ K) x = b, s² = τ/2, K the cotangent stiffness, M the mixed areas, b
 // the amount's right-hand side −s² K M⁻¹ K X (x, y, z). One option per process, so that the peak

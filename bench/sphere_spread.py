@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """sphere_spread.py MESH: radius spread (max - min) / r about the least-squares sphere, in percent.
 
 Reads PLY (binary or ASCII, as elastica writes it) or OFF vertex positions only."""

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The words of `elastica batch COMMAND -o DIR [options of COMMAND] INPUT...`, sorted into the batch's
 // own options, COMMAND's options (forwarded to each run as given) and the inputs. COMMAND's options
 // are recognised from its own CLI11 definition, so batch never lists them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a batch works on: the mesh files found in the inputs, the output each one gets, and the
 // shard of them this process runs.
 #pragma once

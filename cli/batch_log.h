@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a batch tells: one JSON line per input in --log, a progress line on a terminal, and a table
 // at the end.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The record a batch keeps beside each output, so a second run can tell what is done: the program,
 // the command and its options, and digests of the input's and the output's bytes.
 #pragma once

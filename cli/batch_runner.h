@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running a batch's jobs as child processes, a few at a time: each with a time limit, all of them
 // told when the batch is interrupted.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica batch COMMAND -o DIR [options of COMMAND] INPUT...`: run fair, fill or curvature over
 // many meshes. Each input runs as `elastica COMMAND INPUT -o DIR/<stem>.<format> [options]`, a child
 // process of this same program on one thread, so its output has the single-file command's bytes by

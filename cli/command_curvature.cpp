@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica curvature IN -o OUT.ply`: discrete mean and Gaussian curvature and the total
 // curvature energy of a mesh.
 #include "commands.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica fair IN -o OUT`: fair a mesh with the discrete elastica flow (or a comparison flow),
 // optionally coarse to fine, optionally only its selected faces.
 #include "commands.h"

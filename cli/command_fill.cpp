@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica fill IN -o OUT`: restore the missing regions of a mesh (paper §4): every hole up to a
 // size is triangulated, refined to the surrounding density, started from a bi-Laplace solve and
 // faired with the elastica flow while two rings around it stay fixed.

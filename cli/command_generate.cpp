@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica generate SHAPE -o OUT.ply`: procedural meshes with known curvature (icosphere, torus,
 // grid), for trying the tools and for held-out checks.
 #include "commands.h"

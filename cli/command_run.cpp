@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica run -i IN -o OUT -s SCRIPT.mlx`: run a MeshLab filter script that uses the Elastica
 // filters, as meshlabserver with the plugin would, with the same parameter semantics and the same
 // numerics (both go through app/). Friendlier than meshlabserver: a parameter the script omits

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica subdivide IN -o OUT.ply [--levels N]`: linear 1-to-4 subdivision (every triangle split
 // at its edge midpoints; no vertex moves). The step of `fair --subdivide` on its own, for
 // coarse-to-fine schedules a script drives stage by stage (bench/paper_figures.sh).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Subcommands of the `elastica` program. Each registers itself on the CLI11 app with its options
 // and a callback that does the work; main() turns exceptions into one line on stderr and an exit
 // code.

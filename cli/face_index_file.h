@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Face selections given as a text file of face indices, for users without MeshLab's PLY flags:
 // `elastica fair --selected-faces FILE`.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The command-line options of the fair, fill and curvature commands, generated from the options
 // table (app/filter_spec.h): one option per row with a CLI flag, its type, range, default and
 // help from the row. The values given are collected by row and turned into options by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing a JSON report (--report; app/reports.h builds it), and the live progress line on a terminal.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `elastica` help as a reader wants it, not as CLI11 stores it: an enum option lists its words
 // once ("{elastica|lmc|bilaplacian}", not "ENUM:value in {bilaplacian->2,...} OR {2,0,1}"), a
 // range reads "INT >= 0", a default "(default 0.05)", and a negative flag is shown without its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // elastica: fair triangle meshes with the discrete elastica flow (Yoshizawa & Belyaev 2002).
 // Exit codes: 0 success, 1 the work failed (message on stderr), 2 bad command line. On SIGINT
 // (Ctrl-C), SIGTERM or SIGHUP the file being written is deleted and the process dies of the

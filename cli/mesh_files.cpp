@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mesh_files.h"
 
 #include <elastica/vcg_adapter.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // File handling shared by the subcommands: reading with notes on stderr, atomic output in the
 // format the output's extension names.
 #pragma once

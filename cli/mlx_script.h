@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MeshLab filter scripts (.mlx), read without Qt: the <FilterScript> of <filter name="..."> with
 // <Param type="Rich..." name="..." value="..."/> children that MeshLab's "Save script" writes and
 // meshlabserver -s runs. Only the parts our filters use are kept (RichEnum's enum_val list is

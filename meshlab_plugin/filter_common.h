@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The filters' MeshLab side, shared by the plugin classes of both APIs (meshlab_api.h): MeshLab's
 // RichParameters <-> the application layer's parameters (app/filter_spec.h), the current mesh
 // through the application layer (app/filter_apply.h) and back, what a run changed as a MeshLab

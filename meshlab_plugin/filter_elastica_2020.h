@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plugin class for MeshLab 2020.09 (Debian 12; ELASTICA_MESHLAB_API=2020): MeshFilterInterface,
 // a thin adapter over the shared filter code (filter_common.h), which does the work. Built as
 // libfilter_elastica.so, run-tested in meshlabserver and the GUI (tests/plugin/).

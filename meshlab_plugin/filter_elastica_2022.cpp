@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "filter_elastica_2022.h"
 #include "filter_common.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plugin class for MeshLab 2022.02 (Debian 13; ELASTICA_MESHLAB_API=2022): FilterPlugin, a thin
 // adapter over the shared filter code (filter_common.h), which does the work. Compile-checked
 // against Debian 13's meshlab source package (ctest plugin_meshlab2022_compile), not run-tested:

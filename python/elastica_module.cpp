@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Python module `elastica`: NumPy arrays in and out, through the application layer that the
 // CLI and the MeshLab plugin use (app/filter_run.h, app/reports.h), so a result here equals the
 // CLI's on the same input. The GIL is released while the core computes; a progress callback takes

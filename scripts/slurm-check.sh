@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # A real single-node Slurm cluster for `elastica batch`: starts munged, slurmctld and slurmd on this
 # machine (Debian's slurm-wlm and munge, configured in a temporary folder, on ports of their own),
 # submits examples/slurm/fair-array.sbatch (an array of 4 shards) over the libcgal-demo meshes that

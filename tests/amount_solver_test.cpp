@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fairing amount's system (flow/principal_part_filter.h), (M + τ/2 · C M⁻¹ C) δ = −τ/2 · C M⁻¹ C X
 // on a whole closed mesh at the default amount's step, solved by conjugate gradients with an
 // incomplete Cholesky preconditioner (flow/incomplete_cholesky_cg.h) against a fresh direct

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica batch` end to end through the real binary: its outputs are the single-file command's
 // bytes, a bad input fails alone, an interrupted batch leaves only whole files and a second run
 // finishes it, and shards partition the inputs.

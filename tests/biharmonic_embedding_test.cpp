@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bi-Laplace start of a hole's patch (restoration/biharmonic_embedding): free vertices solve
 // (C M⁻¹ C) x = 0 with every other vertex fixed.
 #include <elastica/shapes.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sliding boundaries (flow/boundary_slide, BoundaryMode::Slide): boundary vertices move along the
 // boundary polylines recorded at the start, towards even spacing; corners stay; nothing else moves.
 #include <elastica/shapes.h>

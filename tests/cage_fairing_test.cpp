@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The flow issue's cage experiment as tests: coarse polygon cages written by hand (data/cages/,
 // quads split by the reader along one diagonal, CAD slivers), faired by the default pipeline
 // (semi-implicit with remeshing), against what is known of the continuum minimisers. Roundness and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The application layer's table of enumerated options (app/choices.h): every enumerator has one
 // entry, names are unique, and the MeshLab menus keep their entries in .mlx index order.
 #include <elastica/app/choices.h>

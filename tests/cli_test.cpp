@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `elastica` program end to end: generated and bundled real meshes, output files, exit codes.
 #include "file_helpers.h"
 #include "run_elastica.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The angle at a corner (operators/corner_angle.h): exact cases, the ends of the range, and the
 // smallest-angle measure built on it.
 #include <elastica/mesh_quality.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The kept crossing test (mesh/crossing_cache.h) gives the plain test's answers
 // (mesh/self_intersection.h) on a mesh whose faces move between calls, and builds its grid again
 // exactly when a face it keeps changes.

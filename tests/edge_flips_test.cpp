@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dynamic connectivity (mesh/edge_flips): Delaunay edge flips among the moving vertices.
 #include <elastica/geometry.h>
 #include <elastica/shapes.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A region's fair through the application layer (app/filter_run.h), the path of every face: it
 // checks the whole mesh and measures its energy a piece at a time, building no Topology of the
 // whole mesh, and refuses what a whole run refuses, with the same message.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // FlowOptions::featureSize, the fairing amount: the flow's principal part runs for
 // t = 2 (size / 2π)⁴ and stops with StopReason::FeatureSize. Checked on a sphere carrying small
 // bumps (1 % of the bounding-box diagonal across) and one broad feature (20 % across): the amount

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fill through the application layer (app/filter_run.h), the path of the MeshLab filter,
 // `elastica run` and the Python module: it checks the input and fills on pieces of the mesh, and
 // never builds a Topology of the whole mesh (several times the mesh's memory on a large scan).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fair() in both schemes, one test body each (gtest value-parameterised over Scheme): the explicit
 // scheme (the paper's P ← P + τFN + εT) and the semi-implicit one must meet the same specification;
 // where their bounds differ, the difference is in SchemeCase and says why.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stopping tolerances mean the same in both schemes: FlowOptions::energyTolerance (the
 // relative energy change per unit of normalised time t/A²) ends an explicit and a semi-implicit
 // run alike. Before, the semi-implicit scheme read only its own plateau test and silently ignored

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fair() with the paper's explicit scheme against analytic shapes (paper §2–3): tori move toward the
 // Clifford torus, energy decreases for each flow, the scheme is scale-covariant, selections and
 // boundaries hold, and the coarse-to-fine schedule, limits and errors behave. The tests that run

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shape restoration: holes cut from analytic surfaces are filled and compared with the surface.
 #include "self_intersections.h"
 #include "test_meshes.h"

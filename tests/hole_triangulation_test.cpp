@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A hole's border and its first fill (restoration/hole_boundary, hole_triangulation): boundary
 // loops walked against their faces, Liepa's minimum-weight triangulation without new vertices.
 #include "hole_patches.h"

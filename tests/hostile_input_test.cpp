@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile inputs through the real `elastica` binary: every file listed in tests/hostile/cases.txt
 // and every bad path below must give one clear error naming the file, an exit code in 1..127 and
 // no file written (no output, no temporary left beside it) -- or, for the repairable ones, exit 0

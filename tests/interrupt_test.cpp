@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Ctrl-C and kill: an existing destination is never touched and no temporary file is left. The
 // real `elastica` is interrupted in the middle of a flow (after its first --progress line, so
 // the signal always arrives while it works); a forked writer is interrupted while its temporary

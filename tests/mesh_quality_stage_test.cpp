@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The flow's remeshing within a vertex budget (flow/mesh_quality_stage.h): the budget's formula,
 // and a curvature-adaptive remeshing that leaves no more moving vertices than it is given.
 #include <elastica/shapes.h>

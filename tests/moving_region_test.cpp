@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MovingRegion: the topology and the roles follow the mesh, the selection and the mode; they are
 // kept while only positions move and built again after a connectivity edit.
 #include <elastica/shapes.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The options table (app/filter_spec.h), for every filter: each row's names and its field agree,
 // its defaults are the core's (but for the dialogs' documented bounds), every value in range is
 // taken and written into its field, a bad value per parameter is refused naming it as the caller

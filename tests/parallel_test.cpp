@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The OpenMP loops (support/parallel.h): every index once, and reductions whose bits do not depend
 // on how many threads the machine's load leaves them.
 #include "support/parallel.h"

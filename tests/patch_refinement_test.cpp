@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Refining a hole's triangulation to the density around it (restoration/patch_refinement, Liepa
 // 2003 §4): centroid splits where a triangle is too large for the edge lengths at its corners,
 // Delaunay flips inside the patch only.

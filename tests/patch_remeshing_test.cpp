@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Isotropic remeshing of a hole's patch (mesh/patch_remeshing, Botsch & Kobbelt 2004):
 // only the patch's own vertices and faces change; slivers go.
 #include "hole_patches.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Restoration on real meshes: the bundled bunny and CGAL's elephant (Debian's libcgal-demo, fetched by scripts/setup.sh),
 // with real holes, and with a region cut away and compared with what was cut.
 #include "geodesic_cut.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The default fair() on whole scans from Debian's libcgal-demo that the flow was not designed on
 // (scripts/setup.sh fetches them): four-legged animals and a knotted tube. Genus 0 must end as a
 // round sphere with a true "converged"; a knotted torus cannot become a Clifford torus without

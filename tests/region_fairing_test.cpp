@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fair(mesh, region) where MeshLab users fair: a selected part of a scan. Whatever the run does,
 // the mesh that comes back is manifold, has no vertices at one point and no crossing face the
 // input did not have, keeps every face off the region bit for bit, and the region's energy (its

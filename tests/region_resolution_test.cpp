@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A region's resolution (flow/region_resolution.h): a region that resolves its surface keeps its
 // energy under one Loop subdivision of the region; a faceted one (flat faces meeting at a crease,
 // the vector scheme's lid on a clamped region) does not.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The resolution check (flow/resolution_check.h): a mesh that resolves its surface keeps its energy
 // under one Loop subdivision; one whose edges are long beside its curvature does not, and the
 // check says where.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The rim rule (restoration/rim_rule.h): an open surface's outer border stays open, the holes
 // inside it are filled. Each case prints its row of docs/restoration.md's table.
 #include "file_helpers.h"

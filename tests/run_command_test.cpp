@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `elastica run -i IN -o OUT -s SCRIPT.mlx`: script handling (defaults with warnings, clear errors
 // for unknown filters, parameters and values) and its results. The agreement with meshlabserver
 // and the plugin is tested in tests/plugin/.

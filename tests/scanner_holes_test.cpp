@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Holes as scanners leave them (issue 15): jagged borders, fragments floating inside a hole, thin
 // parts cut through, holes one edge apart; and a mesh without holes, which the fill must leave as
 // it is. Cut from CGAL's bunny scan (bunny00.off from Debian's libcgal-demo, fetched by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The schedule's rules (flow/schedule.h), each on its own, and Schedule::next on the sequences of
 // verdicts that decide a run: reflows, refinements, the fall-back and the stop reasons.
 #include "flow/schedule.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Preconditioned L-BFGS's two-loop recursion (flow/secant_pairs): with no pair it is the
 // preconditioner, it satisfies the newest pair's secant equation, it refuses pairs of non-positive
 // curvature, and on an ill-conditioned quadratic it needs far fewer steps than the preconditioner

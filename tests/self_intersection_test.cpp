@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The flow's embedding guard (mesh/self_intersection.h) against constructed cases and against
 // vcglib's SelfIntersections, an independent implementation of the same definition.
 #include <elastica/shapes.h>

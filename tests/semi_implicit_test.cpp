@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The semi-implicit scheme's own behaviour (Scheme::SemiImplicit: the stiff fourth-order part solved
 // implicitly, adaptive τ, accepted steps only): the torus all the way to the Clifford torus, the
 // drift held to the step's rules, and what it refuses. Its shared tests with the explicit scheme

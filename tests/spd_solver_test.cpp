@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The sparse SPD solver of the semi-implicit scheme (flow/spd_solver): each backend solves known
 // systems to rounding, refactorises new values on an analysed pattern, and reports failures.
 #include "flow/spd_solver.h"

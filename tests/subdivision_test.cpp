@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // 1-to-4 midpoint subdivision (the coarse-to-fine schedule's refinement step), of the whole mesh
 // and of a region (fair() on a selection).
 #include "test_meshes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Submeshes (mesh/submesh): the piece of a mesh within k face-rings of some vertices, with
 // maps back to the whole; hole filling works on such pieces.
 #include "test_meshes.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The restoration benchmark's sampled distance (tests/support/surface_distance.h) against
 // analytic distances, and its nearest-face search against brute force, near and far.
 #include "surface_distance.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A CAD tessellation remeshed on its own surface (mesh/surface_projection.h,
 // PatchRemeshingOptions::surface, flow/mesh_quality_stage.h: remeshOnSurface): its sharp edges
 // found, closest points on the sheet turned the vertex's way, and a remeshing that moves the

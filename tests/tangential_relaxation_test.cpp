@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Tangential relaxation and untangling (mesh/tangential_relaxation.h): the moves stay in the
 // surface, a jittered mesh comes out untangled, and the tangle test tells a jittered mesh from a
 // clean one.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The local thickness of closed parts (mesh/thickness.h) on shapes whose thickness is known: a
 // thin slab, a torus of tube radius r (2r), a sphere (its diameter); and the CAD working edge
 // length it sizes (flow/mesh_quality_stage.h: cadWorkingEdgeLength).

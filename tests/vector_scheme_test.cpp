@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The vector scheme (Scheme::Vector): the bending energy W it descends and its exact gradient,
 // and the scheme on analytic shapes (sphere, Clifford torus), with and without remeshing. Real
 // scans: real_shape_fairing_test.cpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The connectivity kernel: the faces at each vertex as corners (VertexFaces), appended to as hole
 // filling appends, and the fans around a vertex (vertex_fans.h), on small meshes with known answers.
 #include <elastica/shapes.h>

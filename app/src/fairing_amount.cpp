@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/app/fairing_amount.h>
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Elastica for Blender: fair meshes, fill holes and measure curvature with the discrete elastica flow
 (Yoshizawa & Belyaev 2002), through the Python module `elastica` (the project's python/).
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """A Blender mesh as NumPy arrays and back, in bulk (foreach_get / foreach_set): no per-vertex Python.
 
 Coordinates are the mesh's own (object space): the object's transform is neither applied nor changed.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The three operators. Their redo-panel properties are built from elastica.filters(), the options
 table: every row with a Blender property, with its name, default, label and range, so the add-on holds
 no names or numbers of its own.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on in Blender's interface under Xvfb (ctest blender_addon_gui):
 
   xvfb-run -a blender --factory-startup --python-use-system-env --python shot.py -- OUT.png

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The add-on in headless Blender (ctest blender_addon):
 
   blender -b --factory-startup --python-exit-code 1 --python-use-system-env --python test_addon.py

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Python module against the `elastica` command on the same inputs, against analytic values, and
 on bad arrays. Run by ctest (python_module) with PYTHONPATH at the built module, ELASTICA_EXE at
 the command and OMP_NUM_THREADS=1 (a parallel sum's order depends on the thread count, so equal

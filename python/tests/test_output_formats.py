@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # `elastica … -o OUT` writes the format OUT's extension names; each file is read back here by a
 # parser written from the format's definition (NumPy only, none of Elastica's or vcglib's code),
 # against the same mesh written as binary PLY.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cmake -DBUILD_DIR= -DCONSUMER_DIR= -DWORK_DIR= [-DCXX_FLAGS= -DLINKER_FLAGS=] -P check.cmake
 file(REMOVE_RECURSE "${WORK_DIR}")
 function(run)

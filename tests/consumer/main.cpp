@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The installed package through its front door: the curvature of a unit icosphere (H = 1, K = 1,
 // E = 8π for a sphere), then fair() on a noisy one. Prints the deviations; fails beyond 1 %.
 #include <elastica/elastica.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The installed vcglib adapters: a TriMesh into a vcglib mesh and back, bit for bit.
 #include <elastica/elastica.h>
 #include <elastica/vcg_adapter.h>

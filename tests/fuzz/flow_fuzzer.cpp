@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: the fairing flow on small meshes the input shapes. The first bytes choose a
 // base mesh and the flow's options; the rest move vertices (by small or huge amounts, or onto
 // another vertex, making slivers and zero-length edges). A run is at most a few hundred steps and 5 s of flow.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target: one mesh reader (the format is fixed at compile time by ELASTICA_FUZZ_EXT,
 // since readMesh picks the reader by extension), then the operators on whatever it accepted.
 // A thrown elastica::Error is the expected answer to bad input; anything else (a crash, a

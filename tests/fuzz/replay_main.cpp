@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Replays fuzz inputs through a fuzz target's LLVMFuzzerTestOneInput without libFuzzer, in the
 // normal build: `fuzz_replay_X DIR...` runs every file under the directories (the seed corpus and
 // the crashes fuzzing found, tests/fuzz/regressions/) and fails if the target aborts or throws.

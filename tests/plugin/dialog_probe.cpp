@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A probe preloaded into MeshLab's GUI (LD_PRELOAD) by gui_dialog_test.sh: it measures the filter
 // dialog as MeshLab 2020.09 lays it out, which no screenshot can assert.
 //

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # GUI test after Apply: Debian's MeshLab, with the freshly built plugin in a private prefix, opens
 # a mesh, the filter search (Ctrl+F) opens one of our filters' dialog, Apply runs it at its
 # defaults, and File > Export Mesh As writes the result. Asserted, per case: MeshLab's log (its

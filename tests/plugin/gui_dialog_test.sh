@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # GUI test of the filter dialogs: Debian's MeshLab, with the freshly built plugin in a private
 # prefix, opens a mesh; for each filter the filter search (Ctrl+F) opens its parameter dialog, which
 # must appear as a window of the filter's name; then Help is shown and every help paragraph must

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Shared by the GUI tests (sourced): fail, wait_display for Xvfb, and wait_window for MeshLab's windows.
 # The sourcing script sets meshlab_pid once MeshLab runs.
 

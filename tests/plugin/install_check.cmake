@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cmake -DBUILD_DIR= -DWORK_DIR= -DPLUGIN_DIR= -P install_check.cmake
 # `cmake --install --component meshlab_plugin` puts the plugin into MeshLab's plugin directory
 # (staged under DESTDIR here, so nothing lands in /usr), and the default install does not.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: GPL-3.0-or-later
 # CI's check of the MeshLab 2022.02 plugin API (Debian 13's MeshLab), which this machine cannot
 # install: the shared filter code (meshlab_plugin/filter_common.cpp) and the 2022 plugin class
 # (filter_elastica_2022.cpp) are compiled with -fsyntax-only against the headers and the vcglib of

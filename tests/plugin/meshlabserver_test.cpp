@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Debian's real meshlabserver loads the freshly built plugin from a private prefix under the build
 // directory (nothing is installed into /usr) and runs .mlx scripts of each filter; its output must
 // match `elastica run` with the same script and input: same counts, positions within 1e-5 of the

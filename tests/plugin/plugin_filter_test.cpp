@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plugin class in process, on MeshLab's own MeshDocument/CMeshO (libmeshlab-common): defaults
 // that follow the mesh, and failures that leave the mesh exactly as it was, with the message in
 // errorMessage and in the log (meshlabserver prints only the log).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Generated CAD tessellations: parts whose flat and cylindrical sides are drawn with long thin
 // triangles meeting at sharp edges, as CAD exporters write them (issue 40 item 3).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The real `elastica` as a child process whose output a test reads while it runs, and which it
 // can interrupt (ELASTICA_EXE is set by tests/CMakeLists.txt).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scratch files for the I/O and CLI tests.
 #pragma once
 

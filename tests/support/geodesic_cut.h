@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Holes cut the way scans lose surface, for the restoration's tests and benchmarks: a geodesic
 // disc around a point (one hole however the surface bends, where a ball would also cut through a
 // nearby ear or leg), as many faces as give its border a requested number of edges; the faces cut

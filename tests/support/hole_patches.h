@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A hole closed by the restoration's first step (Liepa's triangulation, no new vertices): the start
 // that the refinement, bi-Laplace and remeshing tests work on. Uses the core's private headers:
 // include it only from tests that link elastica::core_internal.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running the real `elastica` binary (ELASTICA_EXE is set by tests/CMakeLists.txt), or any command,
 // from a test.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The real sample meshes scripts/setup.sh fetches from Debian's libcgal-demo, read as a test needs
 // them (ELASTICA_SAMPLE_MESH_DIR is the test program's definition).
 #pragma once

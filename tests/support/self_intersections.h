@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Counting a mesh's self-intersecting faces with vcglib (an independent check of a restored patch).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Measures of a mesh's shape for the flow tests: roundness, torus aspect ratio, energy recomputed
 // from scratch, and noisy test spheres.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Distances between two triangle soups, sampled: how far a restored patch is from the surface that
 // was cut away (and back), for the restoration benchmark.
 #pragma once

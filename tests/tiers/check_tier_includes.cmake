@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # cmake -DBUILD_DIR=<build> -DPROBES=<probes.txt> -P check_tier_includes.cmake (ctest tier_includes;
 # see CMakeLists.txt here). Each line of PROBES: "<target> build" or "<target> fail <header>".
 file(STRINGS "${PROBES}" probes)

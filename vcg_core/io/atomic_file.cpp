@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/errors.h>
 #include <elastica/io/atomic_file.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whole-mesh checks after reading, on the file's own vertex numbers (so messages point into the
 // file), and the repairs that change no geometry:
 //   refused   non-finite coordinates, out-of-range indices, non-manifold edges (which faces to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PLY straight from arrays. The layout is vcglib's ExporterPLY's for our double VcgMesh, kept
 // byte for byte (files written before and after this writer compare equal): the header with its
 // "comment VCGLIB generated" line, x y z [nx ny nz] [red green blue alpha] [quality] [float

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wavefront OBJ through tinyobjloader (this vcglib's OBJ importer drops every face touching the
 // first vertex). tinyobjloader turns a coordinate it cannot parse ("nan", "abc", a missing z)
 // into 0 without a word, so the 'v' lines are checked here first.

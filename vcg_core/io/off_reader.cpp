@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // ASCII OFF (Princeton's Object File Format and its C/N/ST variants): a keyword line, the counts
 // "vertices faces edges", one vertex per line (x y z, then colours/normals/texture coordinates we
 // ignore), one polygon per line ("n i0 .. in-1", then an optional colour). '#' starts a comment.

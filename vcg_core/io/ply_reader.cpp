@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PLY, ASCII and binary (either byte order), read here rather than by vcglib: vcglib allocates
 // whatever counts the header states (a 100-byte file claiming 3 billion vertices is an
 // allocation failure or worse), reads the first three indices of a face whatever its size

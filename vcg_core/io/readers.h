@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The pieces behind readMesh (mesh_reader.cpp), private to elastica_io. Each format reader fills
 // the core mesh in file order (vertex i of the file is positions[i]) and throws IoError
 // "<path>: <what>" naming the line, vertex or face at fault; checkAndRepair then looks at the mesh

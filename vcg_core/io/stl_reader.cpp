@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // STL, binary and ASCII. Binary: an 80-byte label, a little-endian uint32 triangle count, then
 // 50 bytes per triangle (normal, three corners as float32, a 16-bit attribute). ASCII: "solid",
 // then "facet normal ... / outer loop / vertex x y z (x3) / endloop / endfacet", "endsolid".

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The VcgMesh overloads of readMesh and writePly: the only place mesh files meet vcglib. Reading
 // copies the TriMesh read into the vcglib mesh once; writing copies its live elements and the
 // attributes asked for into arrays once, for the array writer.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Discrete mean and Gaussian curvature and the H² − K term of the elastica speed.
 #pragma once
 

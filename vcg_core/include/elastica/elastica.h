@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Elastica's public API in one include: fair a mesh with the discrete elastica flow (fairing.h),
 // fill its holes (hole_filling.h), measure its curvature (mesh_curvature.h).
 //

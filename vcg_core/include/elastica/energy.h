@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The total curvature (thin-plate bending) energy the elastica flow minimises, paper eq. 1.1:
 //   E = ∫ (k1² + k2²) dA = ∫ (4H² − 2K) dA,  discretely  E = Σ_i (4 H_i² − 2 K_i) A_i
 // over interior, regular (and, if a mask is given, active) vertices, with the raw H.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Typed exceptions thrown by the core. Messages say what went wrong and where (which function,
 // vertex, face, edge); the CLI prints them as one line, the plugin as MeshLab's error message.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A set of faces by index: the region a function works on (a user's selection, a patch).
 #pragma once
 

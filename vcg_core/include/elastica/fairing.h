@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fairing a mesh with a flow: the coarse-to-fine schedule (flow to near steady state, 1-to-4
 // subdivision, flow again), the stopping rules and the safety net.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Options and results of the fairing flows (paper §2–3). One options struct and one enum serve
 // the three flows and, later, both integrators.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Per-step geometry of a mesh: everything the discrete operators need, computed once per step
 // into flat arrays from the positions and a Topology. Nobody recomputes a cotangent twice.
 #pragma once

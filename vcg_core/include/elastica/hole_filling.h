@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shape restoration (paper §4, Figs. 9–10): fill the holes of a mesh with patches that continue
 // the surrounding surface's curvature. Each hole is triangulated (Liepa's minimum-weight
 // triangulation), refined to the density around it, started from a bi-Laplace solve, and faired

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cotangent Laplace–Beltrami operator (the paper's eq. 2.6 with Meyer et al.'s normalisation):
 //   (Δ_B f)_i = (1/A_i) Σ_j C_ij (f_j − f_i),   C_ij = ½(cot α_ij + cot β_ij).
 // On a smooth surface Δ_B P = 2H N. The paper prints 3/A with the full cotangent sum, which is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The curvature of a mesh in one call: per-vertex mean and Gaussian curvature and the total
 // curvature energy, for users and reports. (The flows use the cached operators of curvature.h.)
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangle quality measures reported by the restoration and checked by its tests.
 #pragma once
 

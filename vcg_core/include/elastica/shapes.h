@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Procedural meshes with known curvature: the analytic references of the tests, the benchmarks
 // and `elastica generate`.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one place where the two sign conventions of the mean curvature meet.
 //
 // Inside the core (the flows) H is the paper's H = ½ N·Δ_B P with area-weighted outward normals:

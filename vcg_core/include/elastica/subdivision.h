@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Linear 1-to-4 subdivision: every triangle splits into four at its edge midpoints; no existing
 // vertex moves, so the shape is unchanged at the moment of subdividing (the paper's coarse-to-fine
 // acceleration: flow near steady state, subdivide, flow again).

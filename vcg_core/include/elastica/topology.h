@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Connectivity of a triangle mesh in compact arrays (CSR), built once per connectivity change
 // (start, subdivision, remeshing). Every per-step operator reads it and allocates nothing.
 #pragma once

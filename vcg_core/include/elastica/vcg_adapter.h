@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Adapters between any vcglib triangle mesh (MeshLab's float CMeshO, our double VcgMesh) and the
 // core's TriMesh. Templates, so the plugin and the CLI share them. Numerics never run on the vcg
 // mesh: copy in, compute in double, write back once.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The vcglib mesh type of the standalone tools (CLI, tests, benchmarks). Double precision, so a
 // file read, processed and written loses nothing; MeshLab's own CMeshO is float and goes through
 // the same adapter templates (vcg_adapter.h).

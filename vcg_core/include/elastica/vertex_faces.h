@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The faces at each vertex, as corners (corner c = 3·f + k is vertex faces[f][k] of face f), in
 // compact arrays (CSR: 4 bytes per corner and per vertex). The one vertex→face adjacency of the
 // core: Topology holds one, the file checks build one over the mesh as read, and hole filling

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fans around a vertex: its faces grouped by the edges at the vertex that they share. A manifold
 // vertex has one fan (closed around an interior vertex, open at a border); more than one is a
 // bow-tie (pinched, non-manifold) vertex. Written once for the topology's count of bow-ties, the

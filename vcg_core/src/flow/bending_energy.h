@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The discrete bending energy that the vector scheme descends, with its exact gradient:
 //   W(X) = Σ_i ( |y_i|² / A_i − 2 K_i A_i ),   y_i = Σ_j C_ij (X_j − X_i) = A_i Δ_B X_i = 2 A_i H⃗_i,
 // over the counted vertices i (active, interior, with an area), C the cotangent weights, A_i the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/boundary_slide.h"
 
 #include "mesh/surface_projection.h"

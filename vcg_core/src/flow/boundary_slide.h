@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Boundary vertices that slide along the mesh's original boundary polylines (BoundaryMode::Slide):
 // they move only along the boundary, towards even spacing, and are projected back onto the
 // polylines recorded at the start, so the boundary curve itself never changes.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which vertices move. The flow's speed contains Δ_B H, which at a vertex needs H on its
 // neighbours, which needs their neighbours: so a moving region is surrounded by two fixed rings
 // (ring 1: fixed neighbours of moving vertices, where H is still evaluated; ring 2: theirs). With

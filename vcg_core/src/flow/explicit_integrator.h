@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's explicit scheme (eq. 2.2/2.3): one step moves every free vertex by τF along its
 // normal, τ = stepFactor · A_min², plus the tangential drift ε·T (eq. 2.5); for the bilaplacian
 // comparison flow, P ← P − τ U0²(P).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fair() on a selection given as one byte per face, in and out: what the public fair() overloads
 // and the hole filler (which fairs a patch inside a submesh) share.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The normal speed of the fourth-order flows, written once: both schemes call it, so the explicit
 // step and the semi-implicit right-hand side cannot drift apart.
 #pragma once

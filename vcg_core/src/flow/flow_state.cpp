@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/energy.h>
 #include <elastica/errors.h>
 #include "flow/flow_state.h"

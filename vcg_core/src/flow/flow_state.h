@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The state of a flow at one resolution: the moving region (the mesh with its topology and vertex
 // roles, built once per connectivity: flow/moving_region.h), and the per-step caches (geometry, curvature, energy, active areas) that a step
 // reads without allocating. The integrators (explicit_integrator.h, semi_implicit_integrator.h)

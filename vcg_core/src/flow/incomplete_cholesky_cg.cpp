@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/incomplete_cholesky_cg.h"
 
 #include <Eigen/IterativeLinearSolvers>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Conjugate gradients preconditioned by an incomplete Cholesky factorisation (Eigen's, on the
 // matrix's own pattern: no fill, AMD ordering, diagonal scaling, shifted until it factors). For a
 // matrix close to its diagonal, as a fairing amount's M + τ/2 · C M⁻¹ C is on a well-shaped mesh,

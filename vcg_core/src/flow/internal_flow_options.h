@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The flow's knobs that no face sets: restoration tunes them for a hole's patch (hole_filling.cpp),
 // fair() runs with the defaults. They live here, not in FlowOptions, so that the public header
 // lists only what a user chooses. The measurements behind the defaults: docs/options.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/mesh_quality_stage.h"
 #include "flow/constraints.h"
 #include "flow/region_guard.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Keeping the triangles fit for the discrete operators while a flow runs: the paper's future work
 // (dynamic connectivity, its ref. [7]) as stages of the semi-implicit pipeline. Measured on coarse
 // polygon cages (docs/figures.md, "Cages from elsewhere"):

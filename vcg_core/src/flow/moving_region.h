@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The part of a mesh a flow moves, as one value: the mesh, its face selection and the boundary
 // mode, with the topology and the vertex roles that follow from them. Both are built when first
 // asked for and kept until the connectivity or the selection changes: the schedule, the quality

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fairing amount (FlowOptions::featureSize) under the vector scheme: the flow's principal part
 // run as a linear filter. For a bump of wavelength λ on a surface that bends on a scale R ≫ λ, the
 // elastica flow F = −Δ_B H − 2H(H² − K) is, to leading order, u_t = −½ Δ²u: it damps the bump like

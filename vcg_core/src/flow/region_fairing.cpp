@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // fair(mesh, region): a selected region of a mesh, faired at the region's cost. The run works on
 // a piece of the mesh (the region, the rings around it that its operators read, and the faces near
 // it that it could run into), checked there by the region guard (flow/region_guard.h), and the

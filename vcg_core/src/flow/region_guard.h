@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What fair(mesh, region) promises of its output, checked on the output itself: a flow run can
 // end in a state that no single step's guard caught (a remeshing that stacks vertices at one
 // point, a region that crossed itself before the embedding guard was asked, a time limit in a

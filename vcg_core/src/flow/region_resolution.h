@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether a region's result resolves the surface it stands for (issue 42). The vector scheme moves
 // vertices along the surface as freely as across it, and on a region clamped at its rim it can
 // lower the discrete energy by moving them out of the region's middle: a few large flat faces

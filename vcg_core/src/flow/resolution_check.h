@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether a mesh resolves the surface it stands for (issue 40): Loop's limit surface is smooth, so
 // a mesh that resolves its shape keeps its energy E under one Loop subdivision; one that lets a
 // tunnel or a neck pinch below what its edges resolve counts the pinch as nearly free, and the

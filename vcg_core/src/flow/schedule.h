@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The schedule of a fair() run (fairRegion, flow/fairing.cpp): what follows a flow stage. A stage
 // ends with a verdict (StageVerdict); Schedule::next turns it into the next move: flow the same
 // level again after a remeshing (Reflow) or, with the connectivity kept, an untangling

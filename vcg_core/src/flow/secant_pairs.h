@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Limited-memory BFGS on top of a preconditioner (Nocedal's two-loop recursion): the last few
 // accepted steps s and the changes y of the gradient across them correct the preconditioner's
 // model of the inverse Hessian H₀ along the directions the flow actually took. Used by

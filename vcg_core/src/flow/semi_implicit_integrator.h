@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The semi-implicit scheme (ours; the paper's future work): linearly implicit in the stiff
 // fourth-order part, (M + τ/2 C M⁻¹ C) δ = τ M F for the normal displacement δ, everything else
 // lagged (semi_implicit_system.h). A step is accepted only if no active face turns over, no vertex

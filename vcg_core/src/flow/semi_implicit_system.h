@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The linear system of one semi-implicit step: to leading order
 // F(P + δN) ≈ F − ½ Δ_B² δ, so the normal displacement δ of the free vertices f solves
 //   (M_ff + τ/2 · C_fa M_aa⁻¹ C_af) δ_f = τ M_ff F_f,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sparse symmetric positive definite solves: CHOLMOD's simplicial Cholesky (SuiteSparse) where the
 // build has it and the system is large, Eigen's SimplicialLDLT otherwise. Neither calls BLAS, so
 // the bits do not depend on the CPU's BLAS kernels. The fill-reducing

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Umbrella operators: the tangential drift that keeps triangles even (paper eq. 2.5) and the
 // equal-weight bi-umbrella of the bilaplacian comparison flow (paper §3).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/semi_implicit_system.h"
 #include "flow/spd_solver.h"
 #include "flow/vector_integrator.h"

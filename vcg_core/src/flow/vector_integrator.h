@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The vector scheme (the default): a linearly implicit Euler step of the gradient flow of the
 // discrete bending energy W (flow/bending_energy.h) with the positions themselves as unknowns,
 //   (M + τ/2 · C M⁻¹ C) δ = −τ/4 · ∂W/∂X,   one factorisation, three right-hand sides (x, y, z),

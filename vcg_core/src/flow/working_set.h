@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The memory an explicit step reads or writes, for the benchmarks' bandwidth reference
 // (bench/flow_bench.cpp): not part of any flow.
 #pragma once

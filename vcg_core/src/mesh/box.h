@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An axis-aligned box around points and faces: the broad phase of the embedding guard's crossing
 // test (mesh/self_intersection.cpp) and the obstacles a selected region's run may meet
 // (flow/region_fairing.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mesh/crossing_cache.h"
 #include "mesh/self_intersection.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The embedding guard's crossing test, repeated on a mesh where only some faces move: the faces
 // that do not move (a selected region's obstacles, its fixed rings) are binned into a grid once and
 // kept; each call bins only the moving faces and tests them against each other and against the

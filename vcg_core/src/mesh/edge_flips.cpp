@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/topology.h>
 #include "mesh/edge_flips.h"
 #include "operators/corner_angle.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dynamic connectivity, the light way: flip edges that are not Delaunay (the two angles opposite
 // the edge sum to more than π, so its cotangent weight is negative) inside the moving region.
 // Positions never change, so fixed vertices stay bit for bit; only faces among moving vertices are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A bounding-volume hierarchy over boxes (a mesh's faces, or the segments of its sharp edges): the
 // broad phase of the thickness measure's ray casts (mesh/thickness.cpp) and of the closest-point
 // queries that keep a remeshing on its input surface (mesh/surface_projection.h), O(log n) each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mesh/patch_remeshing.h"
 #include "mesh/surface_projection.h"
 #include "support/parallel.h"

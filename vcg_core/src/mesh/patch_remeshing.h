@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Isotropic remeshing of a hole's patch (Botsch & Kobbelt, "A Remeshing Approach to
 // Multiresolution Modeling", SGP 2004), restricted to the patch's faces: split long edges,
 // collapse short ones, flip toward valence 6, relax tangentially. A deep hole's bi-Laplace patch

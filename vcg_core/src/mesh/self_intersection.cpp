@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mesh/self_intersection.h"
 #include "mesh/box.h"
 

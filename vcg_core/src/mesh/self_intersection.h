@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether a mesh's faces cross each other: the flow's embedding guard. An output must never
 // self-intersect when its input did not, and a handle that pinches shows up as faces crossing
 // before it closes. Uniform-grid broad phase over the face boxes (linear in the face count for

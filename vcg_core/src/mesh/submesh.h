@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A piece of a mesh around a region, with the maps back to the whole. Local work (fairing one
 // patch of a large scan) then costs in proportion to the patch, not to the model.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mesh/surface_projection.h"
 
 #include <elastica/vertex_faces.h>

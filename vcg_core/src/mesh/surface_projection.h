@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The input surface of a remeshing that must not move it (a CAD tessellation's, issue 40 item 3):
 // closest points on its faces and on its sharp edges, so that a remesher can put every vertex it
 // moves back on the surface and keep the part's creases where they are (mesh/patch_remeshing.h:

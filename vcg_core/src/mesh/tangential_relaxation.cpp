@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/geometry.h>
 #include <elastica/mesh_quality.h>
 #include <elastica/topology.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Evening out triangles without changing the surface: each free vertex moves toward the centroid of
 // its neighbours, within its tangent plane. A curvature flow that moves vertices along their normals
 // keeps, up to its weak drift, the triangle shapes it starts from; relaxing first keeps a filled

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mesh/thickness.h"
 #include "mesh/box.h"
 #include "mesh/face_tree.h"

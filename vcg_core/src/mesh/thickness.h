@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The thickness of a closed part: how thin its thinnest feature is (a wall, a web, the tube of a
 // handle), for sizing a CAD tessellation's working resolution (issue 40 item 3,
 // flow/mesh_quality_stage.h: cadWorkingEdgeLength).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The angle at a triangle's corner from its positions, written once. atan2 of |u × w| and u · w:
 // accurate near 0 and π, where acos of the normalised dot product loses digits. (The per-step
 // operators take corner angles from their cached areas and dot products, Geometry::cornerAngle;

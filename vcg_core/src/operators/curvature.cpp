@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/curvature.h>
 #include <elastica/laplacian.h>
 #include "support/parallel.h"

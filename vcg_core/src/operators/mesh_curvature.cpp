@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/energy.h>
 #include <elastica/mesh_curvature.h>
 #include <elastica/sign_convention.h>

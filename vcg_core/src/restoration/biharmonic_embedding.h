@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A linear start for a patch: the free vertices solve the bi-Laplace equation Δ²x = 0 with the
 // rest of the mesh as boundary condition (CGAL's fairing, one sparse solve). A flat fill of a deep
 // hole folds over and stalls a curvature flow; this smooth, G¹-continuing start does not.

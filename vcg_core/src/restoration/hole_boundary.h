@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The holes of a mesh: its boundary loops, walked in the direction a filling patch must take so
 // that the new faces are oriented like the old ones.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hole borders that pass twice through one point. A vertex where two fans of faces meet only at
 // a point is stored as two copies at one position (the reader splits such "bow-tie" vertices, and
 // files often store them so); the hole between the fans then runs through both copies. Filled as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangulating a hole: Liepa's minimum-weight triangulation ("Filling Holes in Meshes", SGP 2003),
 // the one CGAL uses. Among all triangulations of the boundary polygon it picks the one whose
 // largest dihedral angle (between neighbouring triangles, and with the mesh faces around the hole)

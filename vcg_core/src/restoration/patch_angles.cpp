@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "restoration/patch_angles.h"
 
 #include <elastica/vertex_faces.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Raising a patch's smallest angle where remeshing leaves it low: on the ring of faces that touch
 // the hole's border. Remeshing treats border edges as fixed and aims at valence 6 and edge length;
 // what it leaves is a border face whose apex sits too close to, or too far along, its border edge

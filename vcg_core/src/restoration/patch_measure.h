@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a restoration stage is judged by: the smallest angle of the patch's faces and the total
 // curvature energy of the same region, whatever the stage did to the patch's vertices. Stages
 // are compared on this (hole_filling.cpp keeps a stage only if it is no worse), and the report

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "mesh/edge_flips.h"
 #include "restoration/patch_refinement.h"
 

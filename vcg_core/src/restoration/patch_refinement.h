@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Refining a hole's triangulation until its triangles match the density of the mesh around it
 // (Liepa, "Filling Holes in Meshes", SGP 2003, §4): split triangles at their centroids where they
 // are too large for the edge lengths at their corners, keep the patch Delaunay by edge flips.

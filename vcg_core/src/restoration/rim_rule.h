@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rims and holes: an open scan's outer border (a terrain's edge, a face scan's outline, a lone
 // triangle's sides) is not a hole to fill. The rule, per boundary loop:
 //   - the loop turns like an outline: its geodesic turning Σ (π − θ_v) over its vertices (θ_v the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Loops over vertices, faces and edges: across OpenMP threads on large meshes, plainly on small ones.
 //
 // Below kParallelGrain items a parallel region costs more than it saves, and when several

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every enumerated option by name: the one table that maps a command-line word, a MeshLab menu
 // entry and a report's word to a core enum value. The CLI builds its --flow/--scheme/... choices
 // from it, the filters their RichEnum menus (whose index order is the .mlx value, fixed forever:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The fairing amount every face starts from ("auto"): a feature size sized from the faces to fair,
 // so that pressing OK on a scan gives a fairer surface of the same model, as MeshLab's own
 // smoothing filters do, and never the flow's limit shape (a sphere), which stays one choice away

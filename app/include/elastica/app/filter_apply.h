@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Applying a filter to a vcglib mesh (MeshLab's float CMeshO in the plugin, the double VcgMesh in
 // `elastica run`): copy into a TriMesh, run (filter_run.h), and write back only on success, so a
 // failing filter leaves the mesh exactly as it was.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running a job: core options → the core, on a TriMesh copy, with what a face needs afterwards
 // (the write-back decision, the output curvature, summary lines with their severity); and, for
 // the MeshLab filters and .mlx scripts, parameter values → core options first (readJob). The vcglib-facing half (copying in and

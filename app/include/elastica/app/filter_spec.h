@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The options table: every parameter of the three filters, one row each, with its name on every
 // face (the options field, the .mlx name, the CLI flag, the Python keyword, the Blender property),
 // its type, range, default and help. Every face is generated from it: the MeshLab dialogs and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The JSON reports of the jobs: what `elastica fair|fill --report R.json` writes and what the
 // Python module returns as a dict, built in one place. Keys are snake_case; words (stop reasons,
 // flows, stages) come from choices.h. A face adds its own entries (the CLI: file names).

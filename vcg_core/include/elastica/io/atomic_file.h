@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing files so that a failure never leaves a half-written output: the data goes to a
 // temporary file in the destination directory, renamed over the destination only when complete.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading triangle meshes from PLY, OFF, STL (our own parsers) and OBJ (tinyobjloader: this
 // vcglib's OBJ importer drops every face touching the first vertex) straight into the core's
 // TriMesh. A VcgMesh overload serves code that works on a vcglib mesh (`elastica run`, `fill`).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing mesh files (PLY, OFF, OBJ, STL by extension), atomically (atomic_file.h): a failure never leaves a half-written output.
 // Our own writer, straight from arrays; its files are byte for byte those vcglib's ExporterPLY
 // wrote for the double-precision VcgMesh (same header, property order and number formats), so
