@@ -18,7 +18,7 @@ are 1/16 at valence 6, so the two differ only around irregular vertices.
 
 --beyond R also prints E over the vertices farther than R mean edge lengths (the level-0 mesh's)
 from the border: where a fixed border is the scan's own rough rows, Loop's smoothing of them
-raises E whatever the faired part does (mannequin-devil, docs/benchmarks.md "Regions").
+raises E whatever the faired part does (mannequin-devil).
 """
 import sys
 

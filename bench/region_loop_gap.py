@@ -3,7 +3,7 @@
 """region_loop_gap.py INPUT OUTPUT: is a faired region's output a fair surface, or a faceted lid?
 
 The vector scheme can leave a region as a few large flat faces meeting at creases, whose discrete
-energy is small (docs/benchmarks.md, "Regions: resolved"). One Loop subdivision shows what such a
+energy is small (docs/decisions.md, "Regions"). One Loop subdivision shows what such a
 mesh stands for. This prints, over the output's vertices that are not the input's (the region's
 moved and new vertices), E = sum (4H^2 - 2K) A at the output's resolution and over the same part of
 the whole output Loop-subdivided once (those vertices and the new vertices of the edges between two

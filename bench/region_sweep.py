@@ -15,19 +15,19 @@ fairing amount) with the default options but max_seconds (and --scheme). Per run
   count minus input count), outside (the faces off the region: every one in the output, bit for
   bit), read (elastica.read takes the PLY elastica.write wrote, with no vertex merged), and the
   report's region_resolution_gap (how much the region's energy rises when Loop-subdivided once; above
-  0.1 a faceted lid, docs/benchmarks.md "Regions: resolved"), region_runs and scheme.
+  0.1 a faceted lid, docs/decisions.md "Regions"), region_runs and scheme.
 
   PYTHONPATH=build/python bench/region_sweep.py ~/.cache/elastica/cgal-data-*/meshes/lion-head.off \
       --regions 8 --noise 0.1 --max-seconds 60 --mesh-check build/bin/mesh_check
 
-With --sizes (docs/benchmarks.md, "Regions"), one region per size instead: the SIZE faces whose
+With --sizes, one region per size instead: the SIZE faces whose
 centroids are nearest a random vertex (default_rng(--seed)), no noise, optionally on the scan
 Loop-subdivided --loop times (bench/loop_energy.py's Loop step; closed scans only); "all" fairs the
 whole scan (its border fixed). One Markdown table row per run, with the load average before it:
 
   PYTHONPATH=build/python bench/region_sweep.py /work/zoo/data/meshes/man.off --sizes 1000,10000,50000 --loop 2
 
-With --sizes and --cgal (docs/benchmarks.md, "Regions beside CGAL"), each region (with
+With --sizes and --cgal (docs/benchmarks.md, "Regions beside CGAL's fair()"), each region (with
 --region-noise, N(0, that * mean edge) on its vertices) is also faired by CGAL's fair() on the same
 moving vertices, and the table has both times, stop, attempts, resolution gap and whole-mesh energies:
 

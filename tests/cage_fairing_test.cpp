@@ -282,7 +282,7 @@ TEST(CageFairing, PipelineIsScaleCovariant) {
 // surface than the input (Loop-subdivided E 1,364 against the input's 450). The run must not
 // claim a result: it says `unchanged` with the reason, and the input comes back, bit for bit,
 // without a crossing face (main said `stalled` on it once; on the held-out CAD parts rotor and
-// anchor it said `stalled` on remeshings that crossed at 511 and 245 faces, docs/benchmarks.md).
+// anchor it said `stalled` on remeshings that crossed at 511 and 245 faces).
 TEST(CageFairing, ThinWalledCadTubeThatNoStateImprovesComesBackUnchanged) {
   const TriMesh tube = test::cadRing(150, 0.5, 0.495, 0.225);
   ASSERT_EQ(genusOf(tube), 1);

@@ -93,7 +93,7 @@ TEST(RealShapes, KnottedTubeStopsAtSelfContactWithoutCrossing) {
 // CLI at OMP_NUM_THREADS=1 and 2 (byte-identical outputs; attempts, E, Loop-1 E): elephant
 // (genus 3) 221, 141.45, +0.9 %; joint (genus 2, a CAD part of 221 vertices) 158, 112.41, +1.2 %;
 // elk (genus 1, its input crosses itself at 11 faces) 57, 78.80, +1.0 %. Main took 1,582, 791
-// and 406 (docs/benchmarks.md, "Shapes with handles").
+// and 406 before the handles' rules (issue 40).
 struct Handles {
   const char* file;
   int genus;

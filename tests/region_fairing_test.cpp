@@ -490,7 +490,7 @@ double faceArea(const TriMesh& m, const Face& f) {
 // vector scheme lowers the discrete energy there by moving the region's vertices out of its
 // middle: it ended "converged" at region E 14.4 on a lid of flat faces up to 60 times the scan's
 // mean face, whose moving vertices' energy rose from 3.0 to 50 once the region was
-// Loop-subdivided (bench/region_sweep.py, docs/benchmarks.md "Regions: resolved"). fair() measures
+// Loop-subdivided (bench/region_sweep.py, docs/decisions.md "Regions"). fair() measures
 // that (flow/region_resolution.h) and runs the semi-implicit scheme too: what comes back is
 // resolved, and its faces are the scan's size.
 TEST(ScanRegionFairingSteps, ARegionIsNotLeftAFacetedLid) {

@@ -120,7 +120,7 @@ TEST(SemiImplicit, AStepFailingOnAFewVerticesIsTakenWithoutThem) {
 // A step that would push faces through another part of the mesh holds the free corners of those
 // faces (and their rings) where they were, and the rest of the step is taken: a region pressed
 // against a fold of its scan at one place flows on elsewhere. Refused whole, lion-head's 1,000-face
-// region spent 150 attempts at τ ≈ 10⁻⁶ ℓ⁴ on four faces at its rim (docs/benchmarks.md, "Regions").
+// region spent 150 attempts at τ ≈ 10⁻⁶ ℓ⁴ on four faces at its rim (docs/decisions.md, "Regions").
 TEST(SemiImplicit, AStepThatWouldMakeFacesCrossIsTakenWithoutTheContact) {
   TriMesh mesh = shapes::grid(14, 14);
   for (Vec3& p : mesh.positions) p.z() = 2 * std::exp(-((p.x() - 7) * (p.x() - 7) + (p.y() - 7) * (p.y() - 7)) / 8);

@@ -131,9 +131,8 @@ constexpr int kCheckPieceVertices = 1 << 12, kCheckPieces = 64;
 
 // checkedTopology's checks (rejecting non-manifold vertices) and the whole mesh's energy. A
 // region's run does both a piece at a time (measureCurvatureInPieces), building no whole-mesh
-// Topology or Geometry: for a 1,000-face region of a 416k-vertex scan those were about 0.9 s of a
-// 1.3 s run, much of it page faults of their fresh arrays (docs/benchmarks.md, "Regions: the
-// whole mesh's share"). A piece that throws is checked again whole, for the mesh's own numbers.
+// Topology or Geometry, which were most of a small region's run on a large scan, much of it page
+// faults of their fresh arrays (docs/decisions.md, "Curvature in pieces"). A piece that throws is checked again whole, for the mesh's own numbers.
 double checkedEnergy(const TriMesh& mesh, const CurvatureMeasureOptions& measure, RepairHints hints, bool inPieces) {
   if (!inPieces) return measureCurvature(checkedTopology(mesh, /*rejectNonManifoldVertices=*/true, hints), mesh, measure).energy;
   if (mesh.faces.empty()) throw InvalidInputError("the mesh has no faces");

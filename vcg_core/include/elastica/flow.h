@@ -172,8 +172,7 @@ struct EnergySample {
 /// rises by at most this fraction when the region is Loop-subdivided once
 /// (FlowReport::regionResolutionGap). Wider than a whole mesh's 2 %: Loop's masks pull a curved
 /// region in against its rim, which stays (a smooth cap of a 2,562-vertex sphere reads +2.4 %),
-/// while the vector scheme's faceted lids read +20 % to +1,600 % (docs/benchmarks.md, "Regions:
-/// resolved").
+/// while the vector scheme's faceted lids read far above it (docs/decisions.md, "Regions").
 inline constexpr double kRegionResolvedGap = 0.1;
 
 struct FlowReport {

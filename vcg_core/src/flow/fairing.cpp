@@ -47,7 +47,7 @@ constexpr int kPlateauWindow = 10;
 constexpr double kSubdivisionPlateauFactor = 100;
 // An energy plateau is the shape's only if it holds at a step of at least this fraction of the
 // moving region's relaxation time A²/kShapeScaleFactor; below, the plateau is the step size's
-// (docs/benchmarks.md, "The schedule's rules").
+// (docs/decisions.md, "The schedule's rules").
 constexpr double kPlateauScale = 1e-3;
 // A step τ ≥ A²/kShapeScaleFactor relaxes the slowest bending mode of a region of area A within
 // the step (τ/2 · λ ≥ 1): the first eigenvalue of Δ² on a clamped disk of area A is ≈ 1030/A²,
@@ -309,8 +309,8 @@ double largestCurvatureTimesEdge(FlowState& state) {
 // tested every pair with an active face at these positions; flips rewrite faces among free vertices
 // only (all of them active) and change no vertex's role, so only a pair with a flipped face can
 // cross, and those alone are tested (rewrittenFacesCross): the whole region's test after every
-// step with a flip was a third of the crossing tests' time on lion-head's 1,000-face region
-// (docs/benchmarks.md, "Regions: the attempt's cost"). A sliding border moved after the guard
+// step with a flip was a large share of the crossing tests' time on a region (docs/decisions.md,
+// "Regions"). A sliding border moved after the guard
 // (BoundarySlider), so there every pair with an active face is tested again, as before.
 bool flipsMadeFacesCross(const TriMesh& beforeFlips, FlowState& state) {
   const std::vector<std::uint8_t>& active = state.roles().activeFace;
@@ -337,7 +337,7 @@ bool flipsMadeFacesCross(const TriMesh& beforeFlips, FlowState& state) {
 // with handles (`firstStageWithHandles`), where it is the lowest κℓ so far: an input's creases and
 // limbs a few edges across say nothing about a neck. After a remeshing the start is the reference
 // (the remesher has just set ℓ ≈ 0.4/κ). The stuck rule is measured against T too: after a step far
-// beyond T, a remeshed stage's first refusals are not stuck. Measurements: docs/benchmarks.md,
+// beyond T, a remeshed stage's first refusals are not stuck. Measurements: docs/decisions.md,
 // "The schedule's rules".
 StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeTolerance, bool guardEmbedding,
                      bool startAtShapeScale, bool firstStage, bool withHandles, bool remeshing, double& lastTau, TriMesh& best,
@@ -354,7 +354,7 @@ StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeT
   // On a selection, damped where its model overshoots (VectorIntegrator::dampOvershoots): a
   // region's stage stalled by its refusals gained nothing from the schedule's reflows (their
   // remeshings left the region as it was), where a whole mesh's stall leads to the remeshing that
-  // frees it (docs/benchmarks.md, "Regions: the step's model where it overshoots").
+  // frees it.
   integrator.dampOvershoots(!state.selection().empty());
   // On a selection, the jump limit asks whether the step strains the mesh
   // (VectorIntegrator::strainJumpLimit): a region moving tens of edge lengths over a scan's small
@@ -572,12 +572,11 @@ constexpr int kMaxUnresolvedRefinements = 3;
 // only) before its first stage when a corner is under kTangledAngle or a face is folded against
 // its corners' normals (`always` false), and whatever its angles (`always`) when the schedule asks
 // for it (NextStage::Untangle), as a remeshing pipeline would remesh. Reported as
-// FlowReport::untanglePasses; measurements: docs/benchmarks.md, "The schedule's rules".
+// FlowReport::untanglePasses; measurements: docs/decisions.md, "The schedule's rules".
 constexpr double kTangledAngleDegrees = 1;
 // An untangling that makes faces cross where none crossed is undone: relaxed tangentially over
-// their slivers, the vertices of two CAD parts with thin walls slid through them (rotor 0 → 194
-// crossing faces, anchor 0 → 242), and the embedding guard then refused every step after
-// (docs/benchmarks.md, "Held-out CAD parts and the femur, traced").
+// their slivers, the vertices of thin-walled CAD parts slid through the walls, and the embedding
+// guard then refused every step after (docs/decisions.md, "CAD parts").
 void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report) {
   const VertexRoles& roles = region.roles();
   if (roles.freeCount == 0 || !(always || isTangled(region.mesh(), roles.activeFace, kTangledAngleDegrees))) return;
@@ -596,7 +595,7 @@ void untangleMovingRegion(MovingRegion& region, bool always, FlowReport& report)
 // (resolution_check.h: what a mesh cannot hide by crumpling or pinching below its edges, and what
 // a CAD tessellation's slivers cannot hide either) above the input's. A thin CAD tube remeshed on
 // its surface (remeshTessellation) can have its wall's sheets pressed together by the flow and
-// stall crumpled, worse than it came (docs/benchmarks.md, "CAD parts on their surface").
+// stall crumpled, worse than it came (docs/decisions.md, "CAD parts").
 bool outputIsWorse(const TriMesh& output, const TriMesh& input, const FlowOptions& opt) {
   Resolution in, out;
   return measureResolution(input, opt, in) && measureResolution(output, opt, out) && out.loopEnergy > in.loopEnergy;
@@ -677,19 +676,16 @@ struct LastStage {
 // left it so). The vector scheme's stage is a function of its start but for its first step τ,
 // carried from the last stage's last; from a stage that ended at its start that step is far beyond
 // the region's shape time T, where the step no longer depends on τ. It is not run again: the
-// schedule judges the last stage's verdict once more. On lion-head's 1,000-face region the third
-// stage repeated the second's 41 attempts, every energy the same to the last digit
-// (docs/benchmarks.md, "Regions: the attempt's cost").
+// schedule judges the last stage's verdict once more (a repeated stage gave every energy the same
+// to the last digit: docs/decisions.md, "Regions").
 bool repeatsLastStage(const LastStage& last, const MovingRegion& region, int level) {
   return isRegionAt(last.mesh, last.selection, last.level, region, level);
 }
 
 // The region on which a reflow's curvature-adaptive remeshing was refused, at its level. That
 // remeshing is a function of the region (its mesh and selection) and of the level's budget, so the
-// same region at the same level is refused again without trying: on lion-head's 1,000-face region
-// the second reflow remeshed the state on which the first had been refused (the stage between
-// them ended where it started), and the refused remeshings were 8 % of the run (docs/benchmarks.md,
-// "Regions: lion-head under a second").
+// same region at the same level is refused again without trying (a stage that ends where it started
+// leaves the next reflow the same state; docs/decisions.md, "Regions").
 struct RefusedRemeshing {
   TriMesh mesh;
   std::vector<std::uint8_t> selection;
@@ -705,11 +701,9 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   // The handles decide vectorStage's neck rule in the first stage, the budget and the resolution check.
   const int genus = closedGenus(region.topology());
   // Scheme::Automatic: the vector scheme, handles or not (the semi-implicit one only where the vector
-  // scheme cannot take its first step: fallsBackToSemiImplicit). Until the resolution check and the
-  // handles' step rules, meshes with handles under 600 vertices a handle ran semi-implicit: eight
-  // and double-torus-example (genus 2, 315 and 231 vertices) stalled there after 328 and 364
-  // attempts, and converge vector in 72 and 66; the block cages at --subdivide 2 and 3 took 184–755
-  // attempts there, 50–87 vector (docs/benchmarks.md, "Shapes with handles").
+  // scheme cannot take its first step: fallsBackToSemiImplicit). With the handles' rules the vector
+  // scheme converges small meshes with handles in fewer attempts than the semi-implicit one
+  // (docs/decisions.md, "The schedule's rules": the automatic scheme).
   if (opt.scheme == Scheme::Automatic) opt.scheme = Scheme::Vector;
   if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
   if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
@@ -775,7 +769,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   // A part remeshed on its surface (remeshTessellation: thin walls that every other remeshing put
   // through each other) is remeshed on its surface later too: curvature-adaptive remeshings free to
   // relax off it pressed rotor's wall's sheets together, and it stalled; kept on it, it became the
-  // Clifford torus (docs/benchmarks.md, "CAD parts on their surface").
+  // Clifford torus (docs/decisions.md, "CAD parts").
   bool onSurface = false;
   if (coarseLevels > 0) {
     ++report.remeshings;
@@ -791,7 +785,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
     // not: its remeshing is judged against the scan around it, and on man.off Loop ×2's
     // 50,000-face region (its isotropic remeshing undone: faces crossed the foot beside it) the
     // split mesh's remeshing stacked vertices and was undone too, after 3–4 s of work before the
-    // first step (docs/benchmarks.md, "Regions: large selections").
+    // first step (docs/decisions.md, "Regions").
     ++report.remeshings;
   } else if (quality && !run.timeLimited() && genus > 0 &&
              remeshMovingRegion(region, false, 1, 0, nullptr, kCrossingRefinements)) {
@@ -817,7 +811,7 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   // A selection keeps its lowest stage end at the level (keepIfBest), without the resolution
   // check, which is the whole mesh's: on lion-head's recipe region 0 the last of three stages, after
   // a reflow's curvature-adaptive remeshing, ended at E 32.65 where the second had ended at 22.2, and
-  // the run said converged on the last (docs/benchmarks.md, "Regions: large selections").
+  // the run said converged on the last (docs/decisions.md, "Regions").
   const bool keepEachStage = quality && !region.selection().empty();
   // The moving vertices this level may have (vertexBudget), ×4 per level; the report has the finest's.
   long long movingBudget = 0;

@@ -91,8 +91,8 @@ void FlowState::evaluateGeometry() {
   if (geometryEvaluated_) return;
   // The per-vertex quantities (areas, normals, angle sums) at the active vertices only: every
   // integrator and the energy read them there (a free vertex and its ring), and a region's piece is
-  // mostly fixed rings and obstacles, whose angle sums alone were 8 % of a region's run
-  // (docs/benchmarks.md, "Regions: the attempt's cost").
+  // mostly fixed rings and obstacles, whose angle sums cost a region's run more than they are worth
+  // (docs/decisions.md, "Regions").
   // The faces whose corners, and their positions, are those of the last evaluation keep their
   // values, and so do the edges whose ends did not move on the same connectivity
   // (computeGeometry's GeometryKept): a region's obstacles and fixed rings never move.

@@ -34,15 +34,13 @@ bool stacksVertices(const TriMesh& mesh, const std::vector<std::uint8_t>& faces)
 }
 
 // coarseStart(): the coarse start's level has at least this many vertices, where a step
-// costs about 0.1 s (not tuned further). The 163,842-vertex noisy icosphere (noise of half an
-// edge) flowed 8,979 → 35,910 → 143,634 vertices in 18 + 2 + 3 steps, 7.5 s, where it took 30
-// steps and 122 s at full size (E 25.1317 both, spread 0.001 %); the 44,460-vertex refined elephant
-// (genus 3) reached E 151.6 at a 120 s limit, against 181.9 at full size (docs/benchmarks.md).
+// costs about 0.1 s (not tuned further): a large mesh reaches its shape sooner from there than at
+// full size (docs/decisions.md, "The schedule's rules": the coarse start).
 constexpr long long kCoarseStartVertices = 10000;
 // The floor for a whole mesh with a border, counted on its moving vertices (coarseStart): there
 // the border's fixed rows keep the input's triangles, and the moving ones are remeshed at the
-// input's mean face area. mannequin-devil (12,977 vertices) then starts at about 3,000 moving
-// vertices; the one measurement that sets it (docs/benchmarks.md, "Regions": the whole open scan).
+// input's mean face area (set on one open scan: docs/decisions.md, "The schedule's rules": the
+// coarse start).
 constexpr double kCoarseStartBorderedVertices = 2500;
 // workingResolutionFloor(): free vertices per handle, and without handles (see the header).
 constexpr int kFloorVerticesPerHandle = 1000, kFloorVertices = 100;
@@ -68,9 +66,7 @@ constexpr double kRemeshAngleDegrees = 20, kRemeshCurvatureTimesEdge = 0.6;
 // thinner than the feature that decides (one sliver or chamfer does not).
 constexpr double kEdgesAcrossThinnest = 3, kThinnestQuantile = 0.1;
 // isotropicEdgeMissesThinnest(): an isotropic edge this many times the thinnest feature steps over
-// it. The scans and parts with handles that flow well run below 1.3 times; a flat washer remeshed
-// at 4.3 times became a ring too coarse for its shape (docs/benchmarks.md, "Held-out CAD parts and
-// the femur, traced").
+// it, and the shape it leaves is too coarse (docs/decisions.md, "CAD parts").
 constexpr double kIsotropicOverThinnest = 2;
 // remeshOnSurface(): a CAD part's sharp edges, where its faces' normals differ by more than this (a
 // box's 90° edges, a thin wall's rim; not the few degrees between a tessellated cylinder's facets).
@@ -201,8 +197,7 @@ void halveTargetsNearCrossings(const TriMesh& mesh, const TriMesh& remeshed, dou
 // The moving faces a remeshing can reshape. On a whole mesh with fixed vertices (a border's two
 // rows), not the ones at a vertex next to a fixed one: remeshRegion edits no edge of a face
 // outside the moving region, and the flow's tangential moves leave thin faces along the fixed rows
-// that no remeshing takes away (mannequin-devil's finest level: 14 faces under 20°, all there, and
-// two reflows for them that did not lower the energy; docs/benchmarks.md, "Regions"). A selection
+// that no remeshing takes away, and reflows for them did not lower the energy (docs/decisions.md, "Regions"). A selection
 // keeps every moving face: its runs were measured so.
 std::vector<std::uint8_t> reshapableFaces(const MovingRegion& region) {
   const TriMesh& mesh = region.mesh();
@@ -238,7 +233,7 @@ int closedGenus(const Topology& topo) {
 CoarseStart coarseStart(const MovingRegion& region) {
   CoarseStart start;
   // A selection starts where it is: its coarse remeshing met the scan's other parts (a 50,000-face
-  // region of a leg crossed the foot beside it, and its steps were refused; docs/benchmarks.md).
+  // region of a leg crossed the foot beside it, and its steps were refused; docs/decisions.md, "Regions").
   if (isSelection(region)) return start;
   start.onMovingFaces = region.topology().boundaryEdgeCount() > 0;
   // A whole closed mesh counts the vertices the isotropic remeshing would give at its own size
@@ -460,7 +455,7 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
   // their index collapsed nearly nothing (a coarse start came back with every vertex it had): they
   // keep their order instead (fair()'s contract). A selection keeps its faces' indices, and with
   // them remeshings that collapse little (its band of fixed faces lies between its moving ones
-  // too): its runs were measured so, and it has no coarse start (docs/benchmarks.md, "Regions").
+  // too): its runs were measured so, and it has no coarse start (docs/decisions.md, "Regions").
   options.regionMayShrink = moving.selection().empty();
   options.deadline = moving.deadline();
   // On its surface: the flowed surface has no sharp edges to keep (an angle of 180° finds none).
@@ -504,8 +499,8 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
     // matrices are not positive definite and every attempt of both schemes was refused (36 and 144
     // attempts, then `unchanged`); the curvature-adaptive remeshing of the mannequin's region after
     // its first stage left 0.0064° (from 9.7°) and the region's energy 78.5 → 531, and the run never
-    // got back below it. The first remeshings of 1,000-face regions of man.off, lion-head and
-    // mannequin-devil left 16–39° (docs/benchmarks.md, "Regions"). Whole meshes are left as they were.
+    // got back below it; the first remeshings of small regions stay far above the limit
+    // (docs/decisions.md, "Regions"). Whole meshes are left as they were.
     constexpr double kDegenerateAngleDegrees = 0.1;
     if (!moving.selection().empty()) {
       const double after = smallestAngleDegrees(remeshed, region);

@@ -139,7 +139,7 @@ bool isotropicEdgeMissesThinnest(const MovingRegion& region);
 /// κ²/(0.4² · √3/2) ≈ 7.2 κ² vertices on a unit of area, and ∫κ² ≤ E, the energy, which a fair
 /// shape of genus g keeps below 8π(g + 3) (the genus bound 32π + 8π(g − 1)); four times that, for
 /// the one-ring maximum of κ that widens each refined place and the grading around it (twice that
-/// would have bound the elephant's run: docs/benchmarks.md). Each later level
+/// would have bound the elephant's run: docs/decisions.md, "The remeshing's vertex budget"). Each later level
 /// multiplies it by 4 (a 1-to-4 subdivision).
 long long vertexBudget(long long moving, int genus);
 

@@ -18,7 +18,7 @@ namespace {
 // tolerance within kIncompleteIterations (slivers), and by the matrix's Cholesky factorisation
 // from then on. Below, the factorisation costs little, and small meshes keep its bits. The
 // tolerance is the residual's, relative to the right-hand side's: rounding's order for a matrix
-// within a few units of its diagonal. Measurements: docs/benchmarks.md, "Scale".
+// within a few units of its diagonal. Measurements: docs/decisions.md, "The amount's solver".
 constexpr int kIncompleteFromRows = 20000;
 constexpr int kIncompleteIterations = 40;
 constexpr double kIncompleteTolerance = 1e-12;

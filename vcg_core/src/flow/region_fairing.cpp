@@ -4,7 +4,7 @@
 // it that it could run into), checked there by the region guard (flow/region_guard.h), and the
 // piece's result is spliced back into the mesh. Nothing in a step, a stage or the checks touches
 // the rest of the mesh: a region of 1,000 faces costs the same on a scan of 17,000 vertices as on
-// one of 280,000 (docs/benchmarks.md, "Regions").
+// one of 280,000.
 #include <elastica/errors.h>
 #include <elastica/fairing.h>
 #include <elastica/topology.h>
@@ -316,14 +316,12 @@ bool checksResolution(const FlowOptions& opt) {
 
 // fairResolved's second run may take this many times the first run's attempts (a count, so that
 // the output does not depend on the machine). A semi-implicit attempt costs about a third of a
-// vector one on a region, and on lion-head's 1,000-face region that scheme needs 300 attempts to
-// the 219 of the vector scheme's run (docs/benchmarks.md, "Regions: resolved").
+// vector one on a region, and that scheme needs somewhat more of them (docs/decisions.md, "Regions": resolved
+// regions).
 constexpr long long kSecondRunAttempts = 2;
 // fairResolved's probe: the vector scheme's first kLidProbeAttempts attempts. A region it will
-// leave as a lid already reads as one there: lion-head's 1,000-face region's Loop gap is +219 %
-// after 20 attempts, +1,582 % after its 219; on the 32 recipe regions every probe above
-// kRegionResolvedGap was a region whose vector result was a lid (11 of 18), and none of the 14 the
-// vector scheme resolves read above it (docs/benchmarks.md, "Regions: the lid seen early"); the
+// leave as a lid already reads as one there, and one it resolves does not, on the recipe regions
+// measured (docs/decisions.md, "Regions": resolved regions); the
 // golden outputs' cow region does, and its vector result is resolved: it pays for all three runs
 // (429 → 563 attempts, the same mesh). Such a region runs the semi-implicit scheme first, with at
 // most kSemiFirstAttempts attempts; the whole vector run follows only if that result is not
@@ -360,8 +358,8 @@ RegionRun runFrom(const TriMesh& mesh, const std::vector<std::uint8_t>& selectio
 // whose steps move vertices only along their normals and whose tangential drift evens them out:
 // the one whose region costs less once its mesh's errors are counted (resolvedEnergy) comes back.
 // Neither is better everywhere: on lion-head's recipe regions the vector scheme's lids cost up to
-// twice the semi-implicit result, and where it does not facet it ends lower (docs/benchmarks.md,
-// "Regions: resolved"). The second run may take kSecondRunAttempts times the first run's
+// twice the semi-implicit result, and where it does not facet it ends lower (docs/decisions.md,
+// "Regions"). The second run may take kSecondRunAttempts times the first run's
 // attempts, within the user's limits. A region whose probe (kLidProbeAttempts) is already a lid
 // runs the semi-implicit scheme first, and keeps its result if it converged resolved. Every
 // attempt, the probe's too, counts against the user's limits and in the report. A result that is

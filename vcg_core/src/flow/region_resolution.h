@@ -3,8 +3,7 @@
 // vertices along the surface as freely as across it, and on a region clamped at its rim it can
 // lower the discrete energy by moving them out of the region's middle: a few large flat faces
 // meeting at creases, whose discrete energy is small (a crease's vertices have large areas) while
-// the surface they stand for is a faceted lid (lion-head's 1,000-face region: E 2.97 over its
-// moving vertices, 49.96 once Loop-subdivided; docs/benchmarks.md, "Regions: resolved"). Loop's
+// the surface they stand for is a faceted lid (docs/decisions.md, "Regions": resolved regions). Loop's
 // limit surface is smooth: where the mesh resolves its shape E changes little under one
 // subdivision, where it does not the creases show what they cost. resolution_check.h measures
 // the same for whole closed meshes.

@@ -5,7 +5,7 @@
 // (Untangle); refine to the next level (Refine); start over with the semi-implicit scheme
 // (FallBack); or stop, with the report's stop reason saying why. Each rule is a named function
 // below, with its test in tests/schedule_test.cpp; the measurements behind the rules are in
-// docs/benchmarks.md ("The schedule's rules").
+// docs/decisions.md ("The schedule's rules").
 #pragma once
 
 #include <elastica/flow.h>

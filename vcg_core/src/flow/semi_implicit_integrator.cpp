@@ -145,9 +145,8 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   // A failed check that a few vertices account for: those go back to where they were (held_),
   // the rest of the step stays, and the step is judged again.
   // Faces that would cross are held the same way (their free corners and rings): a region pressed
-  // against a fold of its scan at its rim flows on elsewhere. Refusing the whole step cost
-  // lion-head's 1,000-face region 150 attempts at τ ≈ 10⁻⁶ ℓ⁴, every one refused for the same
-  // four faces at the rim, before the flow moved away from them (docs/benchmarks.md, "Regions").
+  // against a fold of its scan at its rim flows on elsewhere, where refusing the whole step held it
+  // at tiny steps for the same few faces (docs/decisions.md, "Regions": held faces).
   held_.assign(nv, 0);
   for (int round = 0;; ++round) {
     if (acceptable(state, energyLimit)) {

@@ -27,7 +27,7 @@ enum class SpdBackend {
 class SpdSolver {
  public:
   /// Below this many rows Auto uses SimplicialLDLT: CHOLMOD's set-up costs more than it saves
-  /// (measured crossover in docs/benchmarks.md).
+  /// (docs/decisions.md, "The factorisation").
   static constexpr int kCholmodMinRows = 2000;
 
   explicit SpdSolver(SpdBackend backend = SpdBackend::Auto);

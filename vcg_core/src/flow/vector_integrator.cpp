@@ -54,9 +54,8 @@ constexpr double kMaxExtrapolation = 8;
 // kDampingStart is dropped).
 constexpr double kDampingStart = 1, kDampingGrow = 4, kDampingDecay = 0.5;
 // VectorIntegrator::strainJumpLimit: the strain |δ_i − δ_j| / |X_i − X_j| of an edge that one step
-// may reach where it moves a vertex beyond its own jump limit. The first steps of man.off Loop ×2's
-// 50,000-face region went unshortened at strains of 0.4–0.5 and lowered W (docs/benchmarks.md,
-// "Regions: large selections").
+// may reach where it moves a vertex beyond its own jump limit: steps up to that strain still lower
+// W on a large selection (docs/decisions.md, "Regions").
 constexpr double kMaxStepStrain = 0.5;
 // VectorIntegrator::quasiNewton: how many secant pairs (accepted steps) the direction remembers.
 constexpr int kSecantMemory = 5;
@@ -116,8 +115,8 @@ bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
 // across it (at this attempt's start, after the step and the edge flips that followed it). The
 // flips change W's discretisation after nearly every step of a region's tail, so y carries the
 // flipped edges' terms too; taking y again on the flipped mesh (∂W/∂X at the step's start once
-// more) reached the same energies in as many attempts (docs/benchmarks.md, "Regions: the τ ≫ T
-// tail"), so the pairs are kept across flips as they are. Pairs are kept only while the free
+// more) reached the same energies in as many attempts (docs/decisions.md,
+// "Regions"), so the pairs are kept across flips as they are. Pairs are kept only while the free
 // vertices are the same ones (a stage's integrator is new after a remeshing).
 void VectorIntegrator::addSecantPair(const FlowState& state, const Eigen::MatrixXd& gradient) {
   const Eigen::MatrixXd x = freeRows(state.mesh().positions);
@@ -132,10 +131,8 @@ void VectorIntegrator::addSecantPair(const FlowState& state, const Eigen::Matrix
 
 // The needle barrier's stiffness (bending_energy.h), which the bending matrix lacks: at a corner
 // below 10° the barrier's second derivative grows as 1/θ⁴, and a step that ignores it overshoots
-// the barrier and raises W at any τ above ~10⁻⁴ ℓ⁴. On 1,000-face regions of a scan (man.off,
-// docs/benchmarks.md "Regions") one took 11,368 attempts at τ ≈ 10⁻⁷ of its shape time, every first
-// solve raising W, and one on the scan Loop-subdivided twice took steps that the jump limit
-// shortened to nothing (1,701 attempts, W 40,646 → 40,640); with the stiffness, 82 and 19. Added as an edge Laplacian on the two edges at the corner,
+// the barrier and raises W at any τ above ~10⁻⁴ ℓ⁴: without it a scan's regions crawled at steps far
+// below their shape time (docs/decisions.md, "Regions"). Added as an edge Laplacian on the two edges at the corner,
 // weight (d²b/dθ²) / ℓ² (a far corner moving δ across an edge of length ℓ turns the angle by
 // δ/ℓ), in the matrix's units (τ/4 of W's Hessian). It only preconditions: δ = 0 exactly where
 // ∂W/∂X = 0.

@@ -57,7 +57,7 @@ class VectorIntegrator {
   /// of its ring), and without the damping the same few vertices raised every first try, so that
   /// the held retries and refusals kept τ far below the shape's time. Only preconditions: δ = 0
   /// exactly where ∂W/∂X = 0. Off on whole meshes, where the refusals end a stage held back by its
-  /// mesh and the schedule remeshes it (measured: docs/benchmarks.md, "Regions").
+  /// mesh and the schedule remeshes it.
   void dampOvershoots(bool on) { dampOvershoots_ = on; }
   /// The jump limit asks whether a step strains the mesh, not only how far each vertex goes: a step
   /// that moves a vertex farther than InternalFlowOptions::maxJump of its own ring's mean edge
@@ -65,13 +65,13 @@ class VectorIntegrator {
   /// per-vertex limit binds a region's every step to the scan's smallest triangles, where the
   /// region moves tens of edge lengths smoothly over them (a rigid motion strains nothing, and the
   /// step's model, W's matrix at the old positions, changes with the strain, not with the
-  /// distance). On selections (measured: docs/benchmarks.md, "Regions: large selections").
+  /// distance). On selections (docs/decisions.md, "Regions").
   void strainJumpLimit(bool on) { strainJumpLimit_ = on; }
   /// Preconditioned L-BFGS (flow/secant_pairs.h): the step's direction is H·∂W/∂X with H₀ the
   /// step's own solve (τ/4 · K⁻¹) corrected by the last accepted steps s and the changes y of ∂W/∂X
   /// across them. At τ far beyond the shape's time K is τ times a fixed matrix, the plain step is a
   /// preconditioned gradient descent on W with a frozen model of its Hessian, and it crawls
-  /// (docs/benchmarks.md, "Regions: the τ ≫ T tail"). Only at τ ≥ fromTau (the shape's time T:
+  /// (docs/benchmarks.md, "Regions beside CGAL's fair()": where a region's time goes). Only at τ ≥ fromTau (the shape's time T:
   /// below it H₀ scales with τ, the controller's step size, and the accelerated steps there were
   /// refused so often that τ stayed near T). The accelerated step passes the same checks as the
   /// plain one; where it fails, the pairs are dropped and the same attempt takes the plain step.

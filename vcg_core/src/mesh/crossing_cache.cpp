@@ -17,8 +17,7 @@ constexpr std::int64_t kCellOffset = std::int64_t(1) << 20, kCellLimit = (std::i
 
 // The cell's size in mean face boxes (the largest side of a face's box, averaged over the faces).
 // The plain test's grid uses 1; here fewer, larger cells made the per-call test cheaper (fewer
-// entries per moving face against a few more candidate pairs per cell; docs/benchmarks.md,
-// "Regions: the crossing test").
+// entries per moving face against a few more candidate pairs per cell).
 constexpr double kCellPerMeanFace = 1.5;
 
 std::uint64_t keyOf(std::int64_t i, std::int64_t j, std::int64_t k) { return std::uint64_t((i << 42) | (j << 21) | k); }

@@ -132,8 +132,8 @@ void candidatePairs(const TriMesh& m, const std::vector<std::uint8_t>* only, Vis
   auto key = [](std::int64_t i, std::int64_t j, std::int64_t k) { return std::uint64_t((i << 42) | (j << 21) | k); };
   // A grid of few enough cells is numbered densely: its entries are bucketed by cell in linear
   // time, and the flagged faces' cells are marked in an array, where a general grid sorts both
-  // (the two sorts took an eighth of lion-head's 1,000-face region run, docs/benchmarks.md
-  // "Regions: the attempt's cost"). The pairs tested are the same; only their order may differ.
+  // (the two sorts were a large share of a small region's run, docs/decisions.md, "Regions"). The
+  // pairs tested are the same; only their order may differ.
   const Cell top = cellOf(all.hi);
   const std::int64_t ny = top[1] + 1, nz = top[2] + 1;
   const bool dense = static_cast<double>(top[0] + 1) * static_cast<double>(ny) * static_cast<double>(nz) <=
