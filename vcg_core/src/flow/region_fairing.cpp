@@ -416,7 +416,7 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
   // changed nothing). A final result beats a lid whose Loop surface costs less: that surface is
   // not the mesh that comes back, and the lid would say stalled (lion-head's seeded region 1:
   // the lid 30.1 Loop-subdivided, the semi-implicit result 37.6, converged, resolved;
-  // docs/benchmarks.md, "Regions: final beats a lid").
+  // docs/benchmarks.md, "Regions: a final result beats a lid").
   const bool takeSemi = semi.ran && semi.report.stop != StopReason::Unchanged &&
                         (!vector.ran || vector.report.stop == StopReason::Unchanged ||
                          (final(semi) != final(vector) ? final(semi)
