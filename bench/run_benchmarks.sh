@@ -65,7 +65,7 @@ dirty=$(git -C "$root" status --porcelain 2>/dev/null | grep -v -e '^?? ' -e 'do
 [[ $dirty == 0 ]] || rev="$rev (with uncommitted changes)"
 
 # The real-shape, denoising and regions sections have their own, slower runs (bench/real_shapes.sh
-# --page, bench/denoise.sh, bench/region_sweep.py by hand): kept as they were.
+# --page, bench/denoise.sh, bench/region_sweep.py --cgal by hand): kept as they were.
 real_shapes=$(sed -n '/^<!-- real-shapes:/,/^<!-- \/real-shapes -->/p' "$page" 2>/dev/null || true)
 real_shapes_notes=$(sed -n '/^<!-- real-shapes-notes/,/^<!-- \/real-shapes-notes -->/p' "$page" 2>/dev/null || true)
 denoising=$(sed -n '/^<!-- denoise/,/^<!-- \/denoise -->/p' "$page" 2>/dev/null || true)
@@ -171,7 +171,7 @@ EOF
     printf '\n## Denoising against MeshLab\n\n%s\n' "$denoising"
   fi
   if [[ -n $regions ]]; then
-    printf '\n## Regions: fair() on a selected part of a scan (issue 42)\n\n%s\n' "$regions"
+    printf "\n## Regions beside CGAL's fair() (issue 53)\n\n%s\n" "$regions"
   fi
 } >"$page"
 echo "run_benchmarks: wrote $page" >&2

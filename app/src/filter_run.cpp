@@ -167,33 +167,19 @@ FilterOutputs filterOutputs(FilterId id, const JobOptions& job) {
   return {};
 }
 
-FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const FlowOptions& requested,
-                         bool outputCurvature, RepairHints hints) {
-  FlowOptions opt = requested;
-  FairingResult r;
-  const FaceSet* faces = region ? &*region : nullptr;
-  // "auto" is no amount where an amount has no meaning: the bilaplacian's time has no length unit,
-  // and subdivision levels ask for coarse to fine, to the limit shape.
-  r.amount.automatic = opt.featureSize == kAutoFeatureSize;
-  if (r.amount.automatic)
-    opt.featureSize = opt.flow == FlowType::Bilaplacian || opt.subdivisionLevels > 0 ? 0 : autoFeatureSize(mesh, faces);
-  JobOptions job;
-  job.flow = opt;
-  checkOptions(FilterId::Fairing, job);
-  const CurvatureMeasureOptions measure{opt.area, opt.curvature};
-  r.meshEnergyBefore = checkedEnergy(mesh, measure, hints, /*inPieces=*/region.has_value());
-  if (region && region->faces.empty()) throw InvalidInputError("the region to fair has no faces");
+namespace {
+
+// The flow on the whole mesh or the region. The default amount that raises the energy of what it
+// fairs has collapsed a feature smaller than it into a needle (the principal part shrinks what it
+// smooths): half of it, and so on. A region run says so itself (its guard gives the input back,
+// StopReason::Unchanged). An amount the user chose runs as chosen; the log says when the energy
+// rose. Returns the whole result's curvature when the halving rule measured it.
+std::optional<MeshCurvature> fairHalvingTheAmount(TriMesh& mesh, const std::optional<FaceSet>& region,
+                                                  FlowOptions& opt, const CurvatureMeasureOptions& measure,
+                                                  const TriMesh& input, FairingResult& r) {
   const bool selected = region.has_value();
-  const TriMesh input = mesh;
-  const int inVertices = mesh.vertexCount();
-  r.diagonal = boundingBoxDiagonal(mesh.positions);
-  const double meanEdge = meanFaceEdge(mesh, faces);
-  // The default amount that raises the energy of what it fairs has collapsed a feature smaller
-  // than it into a needle (the principal part shrinks what it smooths): half of it, and so on. A
-  // region run says so itself (its guard gives the input back, StopReason::Unchanged). An amount
-  // the user chose runs as chosen; the log says when the energy rose.
   const bool halve = r.amount.automatic && opt.featureSize > 0;
-  std::optional<MeshCurvature> measured;  // of the whole result, when the halving rule measured it
+  std::optional<MeshCurvature> measured;
   for (;;) {
     r.report = selected ? fair(mesh, *region, opt) : fair(mesh, opt);
     if (r.report.stop == StopReason::Cancelled) throw Error("cancelled; the mesh is unchanged");
@@ -214,35 +200,43 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
     opt.featureSize /= 2;
     mesh = input;
   }
-  r.amount.featureSize = opt.featureSize > 0 ? opt.featureSize : 0;
-  r.amount.edges = meanEdge > 0 ? r.amount.featureSize / meanEdge : 0;
-  r.amount.perDiagonal = r.diagonal > 0 ? r.amount.featureSize / r.diagonal : 0;
-  if (r.amount.featureSize > 0) measureRoughness(r.amount, input, faces, mesh, r.report);
-  const FlowReport& report = r.report;
+  return measured;
+}
 
+// How far the vertices moved, RMS and largest, when the run kept the connectivity.
+void measureMotion(FairingResult& r, const TriMesh& input, const TriMesh& mesh) {
   r.connectivityChanged = mesh.faces != input.faces;
-  if (!r.connectivityChanged && mesh.vertexCount() == inVertices) {
-    double sum = 0, largest = 0;
-    for (int v = 0; v < inVertices; ++v) {
-      const double d = (mesh.positions[v] - input.positions[v]).norm();
-      sum += d * d;
-      largest = std::max(largest, d);
-    }
-    r.movedRms = std::sqrt(sum / std::max(inVertices, 1));
-    r.movedMax = largest;
+  const int inVertices = input.vertexCount();
+  if (r.connectivityChanged || mesh.vertexCount() != inVertices) return;
+  double sum = 0, largest = 0;
+  for (int v = 0; v < inVertices; ++v) {
+    const double d = (mesh.positions[v] - input.positions[v]).norm();
+    sum += d * d;
+    largest = std::max(largest, d);
   }
-  r.outputCurvature = outputCurvature;
-  // A region's run changed the mesh near the region only: its energy after is the input's plus the
-  // change there (the same value up to the order of the sums), not a second whole-mesh measure
-  // (0.23 s of a 1,000-face region's run on a 280k-vertex scan).
-  if (!measured && selected && !outputCurvature) {
+  r.movedRms = std::sqrt(sum / std::max(inVertices, 1));
+  r.movedMax = largest;
+}
+
+// The whole mesh's energy after. A region's run changed the mesh near the region only: its energy
+// after is the input's plus the change there (the same value up to the order of the sums), not a
+// second whole-mesh measure (0.23 s of a 1,000-face region's run on a 280k-vertex scan).
+void measureEnergyAfter(FairingResult& r, const TriMesh& input, const TriMesh& mesh,
+                        const CurvatureMeasureOptions& measure, std::optional<MeshCurvature> measured, bool selected) {
+  if (!measured && selected && !r.outputCurvature) {
     r.meshEnergyAfter = r.meshEnergyBefore + curvatureEnergyChange(input, mesh, measure);
-  } else {
-    if (!measured) measured = measureCurvature(mesh, measure);
-    r.meshEnergyAfter = measured->energy;
-    if (outputCurvature) r.curvature = std::move(*measured);
+    return;
   }
-  r.log.push_back({Severity::Info, std::to_string(inVertices) + " -> " + std::to_string(mesh.vertexCount()) +
+  if (!measured) measured = measureCurvature(mesh, measure);
+  r.meshEnergyAfter = measured->energy;
+  if (r.outputCurvature) r.curvature = std::move(*measured);
+}
+
+// The log's lines on the flow: counts and stop, a state not kept, the region's energy and
+// resolution, the whole mesh's energy and the flow's own when its start differs.
+void logFlow(FairingResult& r, int inVertices, int outVertices, bool selected) {
+  const FlowReport& report = r.report;
+  r.log.push_back({Severity::Info, std::to_string(inVertices) + " -> " + std::to_string(outVertices) +
                                        " vertices, " + std::to_string(report.steps) + " steps in " +
                                        number(report.seconds, "%.2f") + " s (" + labelOf(report.stop) + ")"});
   if (!report.refusedBecause.empty())
@@ -274,39 +268,83 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
                        ": " + number(report.energyInitial, "%.9g") + " -> " + number(report.energyFinal, "%.9g");
     r.log.push_back({Severity::Info, r.flowEnergyLine});
   }
-  if (r.amount.featureSize > 0) {
-    const int h = r.amount.halvings;
-    r.amountLine = "fairing amount: feature size " + exactDecimal(r.amount.featureSize) + " (" +
-                   number(100 * r.amount.perDiagonal, "%.3g") + " % of the bounding-box diagonal, " +
-                   number(r.amount.edges, "%.3g") + " mean edge lengths" + (r.amount.automatic ? ", auto" : "") + ")";
-    if (h > 0)
-      r.amountLine += ", halved " + std::to_string(h) + (h == 1 ? " time" : " times") +
-                      ": a larger one raised the energy (a feature smaller than it collapsed)";
-    const bool rose = !selected && !(r.meshEnergyAfter < r.meshEnergyBefore);
-    if (rose && !r.amount.automatic)
-      r.amountLine += "; the energy rose: a feature smaller than it collapsed (a smaller feature size may keep it)";
-    // The vector scheme's amount keeps the mesh's vertices (fairing.cpp): levels asked for go unused.
-    const bool levelsUnused = opt.subdivisionLevels > 0 && r.report.scheme == Scheme::Vector;
-    if (levelsUnused)
-      r.amountLine += "; the subdivision levels were not used (an amount keeps the mesh's vertices; feature size 0 "
-                      "fairs coarse to fine, to the limit shape)";
-    r.log.push_back({h > 0 || rose || levelsUnused ? Severity::Warning : Severity::Info, r.amountLine});
-    if (r.amount.suggested > 0) {
-      r.roughLine = "the result is still rough (roughness " + number(r.amount.roughnessAfter, "%.3g") + ", from " +
-                    number(r.amount.roughnessBefore, "%.3g") + "; clean scans measure below " +
-                    number(kRoughResult, "%.3g") + "): a feature size of " + exactDecimal(r.amount.suggested) +
-                    " would smooth it further";
-      r.log.push_back({Severity::Warning, r.roughLine});
-    }
+}
+
+// The log's lines on the fairing amount (halvings, a rise, unused levels) and on a result still rough.
+void logAmount(FairingResult& r, const FlowOptions& opt, bool selected) {
+  const int h = r.amount.halvings;
+  r.amountLine = "fairing amount: feature size " + exactDecimal(r.amount.featureSize) + " (" +
+                 number(100 * r.amount.perDiagonal, "%.3g") + " % of the bounding-box diagonal, " +
+                 number(r.amount.edges, "%.3g") + " mean edge lengths" + (r.amount.automatic ? ", auto" : "") + ")";
+  if (h > 0)
+    r.amountLine += ", halved " + std::to_string(h) + (h == 1 ? " time" : " times") +
+                    ": a larger one raised the energy (a feature smaller than it collapsed)";
+  const bool rose = !selected && !(r.meshEnergyAfter < r.meshEnergyBefore);
+  if (rose && !r.amount.automatic)
+    r.amountLine += "; the energy rose: a feature smaller than it collapsed (a smaller feature size may keep it)";
+  // The vector scheme's amount keeps the mesh's vertices (fairing.cpp): levels asked for go unused.
+  const bool levelsUnused = opt.subdivisionLevels > 0 && r.report.scheme == Scheme::Vector;
+  if (levelsUnused)
+    r.amountLine += "; the subdivision levels were not used (an amount keeps the mesh's vertices; feature size 0 "
+                    "fairs coarse to fine, to the limit shape)";
+  r.log.push_back({h > 0 || rose || levelsUnused ? Severity::Warning : Severity::Info, r.amountLine});
+  if (r.amount.suggested > 0) {
+    r.roughLine = "the result is still rough (roughness " + number(r.amount.roughnessAfter, "%.3g") + ", from " +
+                  number(r.amount.roughnessBefore, "%.3g") + "; clean scans measure below " +
+                  number(kRoughResult, "%.3g") + "): a feature size of " + exactDecimal(r.amount.suggested) +
+                  " would smooth it further";
+    r.log.push_back({Severity::Warning, r.roughLine});
   }
-  if (r.movedRms >= 0 && r.diagonal > 0) {
-    r.movedLine = "the vertices moved by " + number(100 * r.movedRms / r.diagonal, "%.3g") +
-                  " % of the bounding-box diagonal (RMS over the vertices), at most " +
-                  number(100 * r.movedMax / r.diagonal, "%.3g") + " %";
-    r.log.push_back({Severity::Info, r.movedLine});
-  }
+}
+
+// The log's line on how far the vertices moved, in percent of the bounding-box diagonal.
+void logMotion(FairingResult& r) {
+  if (r.movedRms < 0 || r.diagonal <= 0) return;
+  r.movedLine = "the vertices moved by " + number(100 * r.movedRms / r.diagonal, "%.3g") +
+                " % of the bounding-box diagonal (RMS over the vertices), at most " +
+                number(100 * r.movedMax / r.diagonal, "%.3g") + " %";
+  r.log.push_back({Severity::Info, r.movedLine});
+}
+
+}  // namespace
+
+// The run: check the options and the mesh, fair (halving the default amount while it raises the
+// energy), measure the result, then say what happened.
+FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const FlowOptions& requested,
+                         bool outputCurvature, RepairHints hints) {
+  FlowOptions opt = requested;
+  FairingResult r;
+  const FaceSet* faces = region ? &*region : nullptr;
+  // "auto" is no amount where an amount has no meaning: the bilaplacian's time has no length unit,
+  // and subdivision levels ask for coarse to fine, to the limit shape.
+  r.amount.automatic = opt.featureSize == kAutoFeatureSize;
+  if (r.amount.automatic)
+    opt.featureSize = opt.flow == FlowType::Bilaplacian || opt.subdivisionLevels > 0 ? 0 : autoFeatureSize(mesh, faces);
+  JobOptions job;
+  job.flow = opt;
+  checkOptions(FilterId::Fairing, job);
+  const CurvatureMeasureOptions measure{opt.area, opt.curvature};
+  r.meshEnergyBefore = checkedEnergy(mesh, measure, hints, /*inPieces=*/region.has_value());
+  if (region && region->faces.empty()) throw InvalidInputError("the region to fair has no faces");
+  const bool selected = region.has_value();
+  const TriMesh input = mesh;
+  r.diagonal = boundingBoxDiagonal(mesh.positions);
+  const double meanEdge = meanFaceEdge(mesh, faces);
+
+  std::optional<MeshCurvature> measured = fairHalvingTheAmount(mesh, region, opt, measure, input, r);
+  r.amount.featureSize = opt.featureSize > 0 ? opt.featureSize : 0;
+  r.amount.edges = meanEdge > 0 ? r.amount.featureSize / meanEdge : 0;
+  r.amount.perDiagonal = r.diagonal > 0 ? r.amount.featureSize / r.diagonal : 0;
+  if (r.amount.featureSize > 0) measureRoughness(r.amount, input, faces, mesh, r.report);
+  measureMotion(r, input, mesh);
+  r.outputCurvature = outputCurvature;
+  measureEnergyAfter(r, input, mesh, measure, std::move(measured), selected);
+
+  logFlow(r, input.vertexCount(), mesh.vertexCount(), selected);
+  if (r.amount.featureSize > 0) logAmount(r, opt, selected);
+  logMotion(r);
   r.mesh = std::move(mesh);
-  if (selected) r.region = FaceSet(report.regionFaces);
+  if (selected) r.region = FaceSet(r.report.regionFaces);
   return r;
 }
 
