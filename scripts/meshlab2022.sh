@@ -5,10 +5,10 @@
 #
 #   scripts/meshlab2022.sh [--screenshot OUT.png]
 #
-# 1. A trixie root, made by debootstrap from the Debian mirror of the system's own apt sources (read
-#    at run time from /etc/apt/sources.list.d/*.sources or /etc/apt/sources.list), with trixie's
-#    meshlab and the build's Debian packages installed in it: $cache/trixie-root (cache: as
-#    scripts/setup.sh, $ELASTICA_CACHE_DIR or ~/.cache/elastica). Made once; a later run reuses it.
+# 1. A trixie root (scripts/debian-root.sh, shared with scripts/meshlab2025.sh: debootstrap from the
+#    Debian mirror of the system's own apt sources, read at run time), with trixie's meshlab and the
+#    build's Debian packages installed in it: $cache/trixie-root (cache: as scripts/setup.sh,
+#    $ELASTICA_CACHE_DIR or ~/.cache/elastica). Made once; a later run reuses it.
 # 2. In it, this source tree (bind-mounted read-only) built with -DELASTICA_MESHLAB_API=2022 against
 #    trixie's meshlab source tree (scripts/setup.sh fetches it) and trixie's libmeshlab-common.so: the
 #    plugin, the elastica command, and tests/meshlab2022/run_filter (a driver that loads plugins
@@ -31,7 +31,7 @@ cd "$(dirname "$0")/.."
 src=$PWD
 shot=
 if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
-[[ $# -eq 0 ]] || { sed -n '3,27p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+[[ $# -eq 0 ]] || { sed -n '3,28p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 [[ $(id -u) -eq 0 ]] || { echo "meshlab2022: run as root (debootstrap and chroot)" >&2; exit 1; }
 
 t0=$SECONDS
@@ -55,69 +55,11 @@ root_packages=(meshlab lib3ds-1-3 libopenctm1 libxerces-c3.2t64 libmuparser2v5 l
   libeigen3-dev libsuitesparse-dev libopenblas0-serial libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev
   xvfb xauth xdotool imagemagick)
 
-# The Debian mirror the system's apt uses (the URI of its main suite), never written in this repository.
-mirror() {
-  local codename f
-  codename=$(. /etc/os-release && echo "$VERSION_CODENAME")
-  for f in /etc/apt/sources.list.d/*.sources; do
-    [[ -f $f ]] || continue
-    awk -v cn="$codename" '
-      /^[ \t]*$/ { if (ok && uri != "") { print uri; exit } ok = 0; uri = ""; next }
-      /^Types:/ { deb = ($0 ~ /(^|[ \t])deb([ \t]|$)/) }
-      /^URIs:/ { split($0, u, /[ \t]+/); uri = u[2] }
-      /^Suites:/ { ok = 0; for (i = 2; i <= NF; i++) if ($i == cn) ok = deb }
-      END { if (ok && uri != "") print uri }' "$f"
-  done
-  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
-    [[ -f $f ]] || continue
-    awk -v cn="$codename" '$1 == "deb" { i = 2; if ($2 ~ /^\[/) while ($i !~ /\]$/) i++; if ($2 ~ /^\[/) i++; if ($(i+1) == cn) print $i }' "$f"
-  done
-}
-
-mounted=()
-cleanup() {
-  local m p
-  # Whatever this run started in the root and left (an Xvfb of a failed xvfb-run): only processes whose
-  # root directory is the trixie root.
-  for p in /proc/[0-9]*; do
-    [[ "$(readlink "$p/root" 2>/dev/null)" == "$root" ]] && kill "${p#/proc/}" 2>/dev/null
-  done
-  sleep 0.5
-  for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[i]}" 2>/dev/null || true; done
-}
-trap cleanup EXIT
-bind() {  # bind SOURCE TARGET [ro]
-  mkdir -p "$2"
-  mount --bind "$1" "$2"
-  mounted+=("$2")
-  [[ "${3:-}" == ro ]] && mount -o remount,bind,ro "$2"
-  return 0
-}
-in_root() { chroot "$root" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LC_ALL=C.UTF-8 DEBIAN_FRONTEND=noninteractive "$@"; }
+source scripts/debian-root.sh
 
 # ---------------------------------------------------------------- 1. the trixie root
 step "trixie root ($root)"
-command -v debootstrap >/dev/null || { apt-get update -qq; apt-get install -y -qq --no-install-recommends debootstrap >/dev/null; }
-if [[ ! -f $root/.elastica-debootstrap ]]; then
-  uri=$(mirror | head -n1)
-  [[ -n "$uri" ]] || fail "no Debian mirror found in the system's apt sources"
-  echo "debootstrap --variant=minbase trixie from the system's mirror $uri"
-  findmnt -rn -o TARGET | grep -q "^$root/" && fail "something is mounted under $root: unmount it first"
-  rm -rf "$root"
-  debootstrap --variant=minbase trixie "$root" "$uri" >"$cache/trixie-debootstrap.log" 2>&1 \
-    || { tail -n 20 "$cache/trixie-debootstrap.log" >&2; fail "debootstrap failed (log: $cache/trixie-debootstrap.log)"; }
-  touch "$root/.elastica-debootstrap"
-fi
-bind /proc "$root/proc"
-bind /dev "$root/dev"
-bind /dev/pts "$root/dev/pts"
-wanted="${root_packages[*]}"
-if [[ "$(cat "$root/.elastica-packages" 2>/dev/null)" != "$wanted" ]]; then
-  in_root apt-get update -qq
-  in_root apt-get install -y -qq --no-install-recommends "${root_packages[@]}" >"$cache/trixie-apt.log" 2>&1 \
-    || { tail -n 20 "$cache/trixie-apt.log" >&2; fail "apt-get install in the trixie root failed (log: $cache/trixie-apt.log)"; }
-  echo "$wanted" >"$root/.elastica-packages"
-fi
+debian_root trixie "$root" "$cache/trixie" "${root_packages[@]}" || fail "the trixie root could not be made"
 echo "trixie's meshlab: $(in_root dpkg-query -W -f='${Version}' meshlab); $(du -shx "$root" 2>/dev/null | cut -f1) in all"
 
 # ---------------------------------------------------------------- 2. the build in the root
@@ -166,15 +108,6 @@ step "the fairing and fill filters in MeshLab 2022.02 (run_filter) against elast
 rm -rf "$root/work" && mkdir -p "$root/work"
 ex=/src/elastica/meshlab_plugin/examples
 run() { in_root env OMP_NUM_THREADS=1 HOME=/work "$@"; }
-# A display number free here and in the root: xvfb-run -a looks only at the root's /tmp, but X
-# servers share the host's abstract sockets, so an Xvfb of a test beside this run (on :99, xvfb-run's
-# first choice) made the root's Xvfb fail and MeshLab abort ("could not connect to display :99").
-free_display() {
-  local n
-  for ((n = 200 + $$ % 500; ; ++n)); do
-    [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n || -e $root/tmp/.X$n-lock ]] || { echo "$n"; return; }
-  done
-}
 run /build/elastica/bin/elastica generate icosphere --level 3 --noise 0.05 -o /work/noisy.ply >/dev/null
 run /build/elastica/bin/elastica run -i /work/noisy.ply -o /work/fair_run.ply -s $ex/fairing.mlx
 run xvfb-run -a -n "$(free_display)" /build/run_filter/run_filter $plugins /work/noisy.ply /work/fair_meshlab.ply $ex/fairing.mlx /work/fair_run.ply 1e-5 \

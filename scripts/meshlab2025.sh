@@ -9,21 +9,21 @@
 #    $cache/sid-root; $ELASTICA_CACHE_DIR or ~/.cache/elastica), with sid's meshlab, blender and the
 #    build's packages (shared with scripts/blender5.sh), and MeshLab's source from sid's source package.
 # 2. In it, this tree (bind-mounted read-only) built with -DELASTICA_MESHLAB_API=2025 (single precision,
-#    the version from the tree's ML_VERSION): the plugin, the elastica command, and the host tools of
-#    packaging/meshlab2022 (run_filter: MeshLab's PluginManager applying an .mlx; plugin_version).
+#    the version from the tree's ML_VERSION): the plugin, the elastica command and Python module, and the
+#    host tools of packaging/meshlab2022 (run_filter: MeshLab's PluginManager applying an .mlx; plugin_version).
 #    Also the double-precision plugin's sources (PyMeshLab's precision): compiled (not linked: sid's
 #    libmeshlab-common is single precision).
 # 3. plugin_version: the plugin's baked version and precision equal the host's, and checkPlugin of sid's
 #    libmeshlab-common accepts it; against a double-precision host it must fail.
 # 4. The plugin's .deb installed into sid's MeshLab; run_filter applies fairing (a noisy sphere), fill
-#    (the bunny with its flank cut away), a selected region (the noisy sphere's upper half, selected in
-#    MeshLab's face flags), each equal to `elastica run` on the same script and input; curvature (the
-#    bunny) runs (not compared value by value: docs/meshlab.md).
+#    (the bunny with its flank cut away), a selected region (libcgal-demo's lion head, 1,000 faces of
+#    its cheek selected in MeshLab's face flags, the inner 500 rough) and curvature (the bunny: H in the
+#    vertex quality within 1e-5 of the largest |H|), each equal to `elastica run` on the same script and input.
 # 5. Help > Plugin Info > Load Plugins in MeshLab's GUI (Xvfb) takes the bundle's .so (package removed);
 #    the fairing filter from the copy MeshLab made equals `elastica run` again.
 # 6. The bundle for users of the upstream 2025.07 Linux build: $cache/meshlab2025/
 #    elastica-meshlab-2025.07-linux-x86_64.tar.gz (libfilter_elastica.so and README.txt).
-# With --screenshot: MeshLab 2025.07's window (faired bunny region, the Filters menu open) as OUT.png.
+# With --screenshot: MeshLab 2025.07's window (the faired lion head region, the Filters menu open) as OUT.png.
 # First run on the development machine (2 shared cores): see docs/meshlab.md. Exit 1 on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,7 +44,7 @@ source scripts/sid-build.sh
 
 # ---------------------------------------------------------------- 1-2. root and build
 step "sid root ($root) and its build"
-sid_root_and_build filter_elastica elastica || fail "the sid root or the build failed"
+sid_root_and_build filter_elastica elastica elastica_python || fail "the sid root or the build failed"
 ml_version=$(in_root dpkg-query -W -f='${Version}' meshlab)
 echo "sid's meshlab $ml_version; MeshLab source $sid_meshlab_tree ($(cat "$root$sid_meshlab_tree/ML_VERSION"))"
 in_root cmake -S /src/elastica/packaging/meshlab2022 -B /build/meshlab-tools -DMESHLAB_SOURCE_DIR="$sid_meshlab_tree" >>"$sid_log" 2>&1 \
@@ -115,18 +115,31 @@ check() {  # NAME INPUT SCRIPT [--measure]
 run $elastica generate icosphere --level 3 --noise 0.05 -o /work/noisy.ply >/dev/null
 check fair /work/noisy.ply $ex/fairing.mlx
 check fill /src/elastica/data/bunny_flank_hole.ply $ex/fill_holes.mlx
-# The region: the noisy sphere's upper faces selected (MeshLab's face flags), faired semi-implicitly with a split.
-run $elastica generate icosphere --level 3 --noise 0.05 --ascii -o /work/noisy_ascii.ply >/dev/null
-run python3 /src/elastica/packaging/meshlab2022/select_upper.py /work/noisy_ascii.ply /work/noisy_selected.ply || fail "no selection"
-check region /work/noisy_selected.ply /src/elastica/tests/plugin/scripts/fairing_selected_semi_implicit_subdivided.mlx
-# Curvature: run through MeshLab, not compared value by value: MeshLab's loader, in run_filter, leaves the
-# reference's quality and colour unread (run_filter --measure then fails); positions must stay.
-run $elastica run -i /src/elastica/data/bunny.ply -o /work/curvature_run.ply -s $ex/curvature.mlx >/dev/null || fail "elastica run failed on curvature"
-in_meshlab "$plugins" /src/elastica/data/bunny.ply /work/curvature_meshlab.ply $ex/curvature.mlx || fail "curvature: the filter failed in MeshLab 2025.07"
+# The region on a scan: libcgal-demo's lion head with 1,000 faces of its cheek selected (MeshLab's face
+# flags) and the inner 500 made rough (bench/meshlab_screenshot_input.py, also the docs' pictures),
+# faired by fairing.mlx with Selected on, as the dialog's OK does with a selection.
+lion=$cache/cgal-data-5.5.1-2/meshes/lion-head.off
+[[ -f $lion ]] || fail "no $lion (run scripts/setup.sh)"
+cp "$lion" "$root/work/lion-head.off"
+run env PYTHONPATH=/build/sid/python python3 /src/elastica/bench/meshlab_screenshot_input.py /work/lion-head.off /work \
+  || fail "no selected region on the lion head"
+sed 's/name="Selected" value="false"/name="Selected" value="true"/' "$src/meshlab_plugin/examples/fairing.mlx" >"$root/work/fairing_selected.mlx"
+grep -q 'name="Selected" value="true"' "$root/work/fairing_selected.mlx" || fail "fairing.mlx has no Selected parameter to set"
+check region /work/lion_head_region.ply /work/fairing_selected.mlx
+# Curvature, value by value: H in each vertex's quality within 1e-5 of the largest |H|, positions unmoved.
+check curvature /src/elastica/data/bunny.ply $ex/curvature.mlx --measure
+# The comparison bites: MeshLab's H (mixed areas) against `elastica run`'s with barycentric areas must fail.
+sed 's/name="area" value="0"/name="area" value="1"/' "$src/meshlab_plugin/examples/curvature.mlx" >"$root/work/curvature_barycentric.mlx"
+run $elastica run -i /src/elastica/data/bunny.ply -o /work/curvature_barycentric_run.ply -s /work/curvature_barycentric.mlx >/dev/null \
+  || fail "elastica run failed on curvature_barycentric"
+if in_meshlab "$plugins" /src/elastica/data/bunny.ply /work/curvature_other.ply $ex/curvature.mlx /work/curvature_barycentric_run.ply 1e-5 --measure; then
+  fail "the curvature comparison accepted another curvature (barycentric areas)"
+fi
+echo "(another curvature refused by the comparison, as it must be)"
 cp "$root"/work/*_meshlab.ply "$out/"
 
 if [[ -n "$shot" ]]; then
-  step "screenshot: MeshLab 2025.07 with the faired region and the Filters menu"
+  step "screenshot: MeshLab 2025.07 with the faired lion head region and the Filters menu"
   cp "$src/packaging/meshlab2022/screenshot.sh" "$root/work/screenshot.sh"
   run env MESHLAB_TITLE="MeshLab 2025" xvfb-run -a -n "$(free_display)" -s "-screen 0 1600x900x24" bash /work/screenshot.sh /work/region_meshlab.ply /work/shot.png \
     || fail "no screenshot"

@@ -28,6 +28,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <numeric>
+#include <ostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -521,6 +523,81 @@ TEST(ScanRegionFairingSteps, ALidSeenInTheFirstAttemptsSkipsTheWholeVectorRun) {
   EXPECT_EQ(r.regionRuns, 2);
   EXPECT_LT(r.steps, vector.steps);
 }
+
+// N(0, 1) from a hash of (vertex, coordinate) (splitmix64, Box–Muller): the same noise on a vertex
+// whatever the region, so that a script can make the same input (the tests' Rng draws in order).
+double hashNormal(std::uint64_t vertex, int coordinate) {
+  auto mix = [](std::uint64_t x) {
+    x += 0x9E3779B97F4A7C15ULL;
+    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+    return x ^ (x >> 31);
+  };
+  const double a = ((mix(6 * vertex + 2 * coordinate) >> 11) + 1) * 0x1.0p-53;  // (0, 1]
+  const double b = (mix(6 * vertex + 2 * coordinate + 1) >> 11) * 0x1.0p-53;
+  return std::sqrt(-2 * std::log(a)) * std::cos(2 * M_PI * b);
+}
+
+// The issue's seeded noisy region (issue 53): the 1,050 faces of `mesh` whose centroids are nearest
+// vertex `vertex`, N(0, 0.1 mean edge) on their vertices (hashNormal), faired to the limit shape
+// with the default scheme within `maxSteps` attempts (above the 2,080 at which fairResolved probes
+// for a lid), its contract checked (expectRegionKept).
+FlowReport fairNoisySeededRegion(const char* mesh, int vertex, long long maxSteps) {
+  TriMesh scan = readSample(mesh);
+  EXPECT_GT(scan.vertexCount(), vertex);
+  std::vector<double> d(scan.faces.size());
+  for (std::size_t f = 0; f < d.size(); ++f) {
+    const Face& t = scan.faces[f];
+    d[f] = ((scan.positions[t[0]] + scan.positions[t[1]] + scan.positions[t[2]]) / 3 - scan.positions[vertex]).norm();
+  }
+  std::vector<int> region(scan.faces.size());
+  std::iota(region.begin(), region.end(), 0);
+  std::stable_sort(region.begin(), region.end(), [&](int a, int b) { return d[a] < d[b]; });
+  region.resize(1050);
+  std::sort(region.begin(), region.end());
+  const double sigma = 0.1 * meanEdge(scan);
+  std::vector<std::uint8_t> done(scan.positions.size(), 0);
+  for (int f : region)
+    for (int v : scan.faces[f])
+      if (!done[v]++)
+        for (int k = 0; k < 3; ++k) scan.positions[v][k] += sigma * hashNormal(v, k);
+  FlowOptions opt;
+  opt.maxSteps = maxSteps;
+  return expectRegionKept(scan, region, opt, std::string(mesh) + " seeded region at vertex " + std::to_string(vertex));
+}
+
+// Seeded noisy regions that main (b9b8d6f) returned `stalled`: the vector scheme's result, a lid
+// (Loop gap +77 % on lion-head, +41 % on mannequin-devil), came back because its Loop-subdivided
+// energy was below the semi-implicit scheme's converged, resolved result. A final result now comes
+// back over one that is not: converged (or self_contact), the gap within kRegionResolvedGap, within
+// twice the attempts measured (lion-head 180, mannequin-devil 151, the same as main's runs).
+struct SeededRegion {
+  const char* mesh;
+  int vertex;
+  long long attempts;  // the measured attempts, times two
+};
+void PrintTo(const SeededRegion& s, std::ostream* os) { *os << s.mesh << " vertex " << s.vertex; }
+class SeededNoisyRegion : public ::testing::TestWithParam<SeededRegion> {};
+TEST_P(SeededNoisyRegion, ConvergesResolved) {
+  const SeededRegion& s = GetParam();
+  const FlowReport r = fairNoisySeededRegion(s.mesh, s.vertex, 2500);
+  EXPECT_TRUE(r.stop == StopReason::Converged || r.stop == StopReason::SelfContact)
+      << "stop " << static_cast<int>(r.stop) << ", gap " << r.regionResolutionGap << ", " << r.steps << " attempts";
+  EXPECT_LE(r.regionResolutionGap, kRegionResolvedGap);
+  EXPECT_LE(r.steps, s.attempts);
+  EXPECT_LT(r.regionEnergyAfter, 0.25 * r.regionEnergyBefore);
+  std::printf("%s vertex %d: %lld attempts, gap %+.3f, region E %.4g -> %.4g\n", s.mesh, s.vertex, r.steps,
+              r.regionResolutionGap, r.regionEnergyBefore, r.regionEnergyAfter);
+}
+INSTANTIATE_TEST_SUITE_P(Issue53, SeededNoisyRegion,
+                         ::testing::Values(SeededRegion{"lion-head.off", 5223, 360},
+                                           SeededRegion{"mannequin-devil.off", 5000, 302}),
+                         [](const ::testing::TestParamInfo<SeededRegion>& info) {
+                           std::string s = info.param.mesh;
+                           s = s.substr(0, s.find('.'));
+                           std::replace(s.begin(), s.end(), '-', '_');
+                           return s + "_" + std::to_string(info.param.vertex);
+                         });
 
 INSTANTIATE_TEST_SUITE_P(LibcgalDemo, ScanRegionFairing,
                          ::testing::Values(ScanRegions{"lion-head.off", 8}, ScanRegions{"mannequin-devil.off", 8}),

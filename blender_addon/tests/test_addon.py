@@ -338,7 +338,7 @@ def test_cancel_through_the_progress_callback_leaves_the_mesh():
 def test_imports_under_factory_startup_from_the_add_on_folder():
     # install.sh puts the module beside the add-on: a Blender started with --factory-startup (no user
     # modules folder on the path, no PYTHONPATH) imports it from there. The legacy add-on's layout only:
-    # an installed Extension (scripts/blender5.sh) carries the module inside its own package.
+    # an installed Extension (scripts/blender5.sh) imports the module from the wheel Blender installed.
     if ADDON != "elastica_blender":
         print("  (legacy add-on layout: not run for the Extension " + ADDON + ")")
         return

@@ -16,8 +16,8 @@
 //   input): exit 1 unless OUT has the same vertex and face counts and faces, and every vertex is
 //   within TOLERANCE (a fraction of the bounding-box diagonal) of REFERENCE's, and some vertex moved
 //   from IN (prints both distances). With --measure (a script that only measures, as the curvature
-//   filter): no vertex may move, and every vertex's quality must be within TOLERANCE of the largest
-//   |quality| of REFERENCE's (or, where MeshLab reads no quality from REFERENCE, every colour equal).
+//   filter): no vertex may move, REFERENCE must have a per-vertex quality, and every vertex's quality
+//   must be within TOLERANCE of the largest |quality| of REFERENCE's (colours that differ are counted).
 #include <common/filterscript.h>
 #include <common/globals.h>
 #include <common/ml_document/mesh_document.h>
@@ -60,25 +60,24 @@ double distance(const CMeshO& a, const CMeshO& b) {
   return d / double(a.bbox.Diag());
 }
 
-// Per-vertex quality (the curvature filter's H) of b against a's, over a's largest |quality|.
-bool qualityAgrees(const CMeshO& a, const CMeshO& b, double tolerance) {
-  if (!a.vert.IsQualityEnabled() && a.vert.IsColorEnabled() && b.vert.IsColorEnabled()) {
-    // MeshLab's PLY reader leaves a double "quality" property unread: compare the colour ramp by H.
-    size_t differ = 0;
-    for (size_t v = 0; v < a.vert.size(); ++v) differ += a.vert[v].cC() != b.vert[v].cC();
-    std::printf("colour by H vs the reference: %zu of %zu vertices differ\n", differ, a.vert.size());
-    return differ == 0;
-  }
-  if (!a.vert.IsQualityEnabled() || !b.vert.IsQualityEnabled()) {
-    std::printf("FAIL: no per-vertex quality or colour to compare\n");
+// Per-vertex quality (the curvature filter's H) of b against a's, over a's largest |quality|. CMeshO's
+// quality and colour are not optional (vector_ocf's IsQualityEnabled() is always false for them):
+// whether the reference file had a quality is its MeshModel's data mask, set by the PLY reader.
+bool qualityAgrees(const MeshModel& reference, const CMeshO& b, double tolerance) {
+  const CMeshO& a = reference.cm;
+  if (!reference.hasDataMask(MeshModel::MM_VERTQUALITY)) {
+    std::printf("FAIL: the reference has no per-vertex quality\n");
     return false;
   }
   double scale = 0, d = 0;
+  size_t colours = 0;
   for (size_t v = 0; v < a.vert.size(); ++v) {
     scale = std::max(scale, std::abs(double(a.vert[v].cQ())));
     d = std::max(d, std::abs(double(a.vert[v].cQ()) - double(b.vert[v].cQ())));
+    colours += a.vert[v].cC() != b.vert[v].cC();
   }
-  std::printf("quality vs the reference: %.2e of its largest |quality| %.3g (tolerance %.0e)\n", d / scale, scale, tolerance);
+  std::printf("quality vs the reference: %.2e of its largest |quality| %.3g (tolerance %.0e); colour: %zu of %zu vertices differ\n",
+              d / scale, scale, tolerance, colours, a.vert.size());
   return scale > 0 && d <= tolerance * scale;
 }
 
@@ -121,7 +120,8 @@ int main(int argc, char** argv) {
     if (argc >= 7) {
       MeshDocument in, ref;
       const CMeshO& input = load(in, argv[2])->cm;
-      const CMeshO& reference = load(ref, argv[5])->cm;
+      const MeshModel& referenceModel = *load(ref, argv[5]);
+      const CMeshO& reference = referenceModel.cm;
       const double tolerance = std::atof(argv[6]);
       const double same = distance(reference, md.mm()->cm);
       if (same < 0) {
@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
       std::printf("vs %s: %.2e of the diagonal (tolerance %.0e); vs the input: %s\n", argv[5], same, tolerance,
                   grew ? qUtf8Printable(QString("%1 -> %2 vertices").arg(input.vn).arg(md.mm()->cm.vn))
                        : qUtf8Printable(QString("moved %1 of the diagonal").arg(moved, 0, 'e', 2)));
-      if (measure) return qualityAgrees(reference, md.mm()->cm, tolerance) && moved == 0 && same <= tolerance ? 0 : 1;
+      if (measure) return qualityAgrees(referenceModel, md.mm()->cm, tolerance) && moved == 0 && same <= tolerance ? 0 : 1;
       if (!(same <= tolerance) || (!grew && moved < 1e-3)) {
         std::printf("FAIL\n");
         return 1;

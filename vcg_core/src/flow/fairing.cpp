@@ -693,61 +693,29 @@ struct RefusedRemeshing {
   bool holds(const MovingRegion& region, int atLevel) const { return isRegionAt(mesh, selection, level, region, atLevel); }
 };
 
-// fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
-FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal,
-                      const StageEnded& stageEnded) {
-  // The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
-  FlowOptions opt = requested;
+// A fairing run's state from its preparation to its output's check: the options as the run changes
+// them (the scheme after a fallback, the levels a coarse start adds) and what one stage leaves to
+// the next.
+struct RegionRun {
+  RegionRun(MovingRegion& region, FlowOptions& opt, const FlowOptions& requested, const InternalFlowOptions& internal,
+            Run& run, FlowReport& report, BoundarySlider* slider, int genus)
+      : region(region), opt(opt), requested(requested), internal(internal), run(run), report(report), slider(slider),
+        genus(genus) {}
+  MovingRegion& region;
+  FlowOptions& opt;
+  const FlowOptions& requested;
+  const InternalFlowOptions& internal;
+  Run& run;
+  FlowReport& report;
+  BoundarySlider* slider;
   // The handles decide vectorStage's neck rule in the first stage, the budget and the resolution check.
-  const int genus = closedGenus(region.topology());
-  // Scheme::Automatic: the vector scheme, handles or not (the semi-implicit one only where the vector
-  // scheme cannot take its first step: fallsBackToSemiImplicit). With the handles' rules the vector
-  // scheme converges small meshes with handles in fewer attempts than the semi-implicit one
-  // (docs/decisions.md, "The schedule's rules": the automatic scheme).
-  if (opt.scheme == Scheme::Automatic) opt.scheme = Scheme::Vector;
-  if (opt.scheme == Scheme::Vector && opt.flow == FlowType::LaplacianOfMeanCurvature) opt.scheme = Scheme::SemiImplicit;
-  if (opt.flow == FlowType::Bilaplacian) opt.scheme = Scheme::Explicit;  // its only scheme (Automatic included)
-  FlowReport report;
-  report.scheme = opt.scheme;
-  Run run{opt, internal, report, stageEnded};
-  region.setDeadline(run.deadline());
-
-  const std::size_t selected = region.selection().size();
-  if (selected != 0 && selected != region.mesh().faces.size())
-    throw InvalidInputError("fair: the selection has " + std::to_string(selected) + " entries for " +
-                            std::to_string(region.mesh().faces.size()) + " faces");
-  std::unique_ptr<BoundarySlider> slider;
-  if (opt.boundary == BoundaryMode::Slide) slider = std::make_unique<BoundarySlider>(region.topology(), region.mesh().positions);
-
-  // A fairing amount keeps the user's vertices and connectivity: no refinement, no remeshing.
-  if (opt.scheme == Scheme::Vector && run.timeLimited()) {
-    FlowState state(region.copyTakingCaches(), opt, internal, slider.get());
-    requireMovingVertex(state, !region.selection().empty());
-    recordStart(report, state);
-    FlowStage stage = beginStage(state, 0);
-    featureSizeStage(state, run, stage);
-    endStage(state, stage, 0, run, region);  // the run's only stage: it started with the run
-    report.seconds = run.elapsed();
-    return report;  // the selection is as it came, and every step is in the history
-  }
-
-  // The semi-implicit pipeline keeps the mesh fit for the operators (FlowOptions::remesh,
-  // flow/mesh_quality_stage.h): first the working-resolution floor, within the levels asked for.
-  const bool quality = opt.scheme != Scheme::Explicit && opt.remesh;
-  FlowOptions stageOpt = opt;
-  if (quality) stageOpt.flipEdges = true;
+  int genus;
+  bool quality = false;  // the mesh kept fit for the operators (FlowOptions::remesh)
+  FlowOptions stageOpt;  // the stages' options: the run's as prepared, with edge flips where quality
   int level = 0;
   // A whole mesh's input, for the check of its output (refuseBrokenOutput).
-  const bool wholeMesh = quality && region.selection().empty();
+  bool wholeMesh = false;
   TriMesh input;
-  if (wholeMesh) input = region.mesh();
-  if (quality) {
-    level = report.preSubdivisions = subdivideToWorkingResolution(region, opt);
-    // A selection's guard asks about the faces that move: crossings elsewhere in a scan leave it on.
-    report.inputSelfIntersects = region.selection().empty()
-                                     ? selfIntersects(region.mesh())
-                                     : selfIntersects(region.mesh(), &region.roles().activeFace);
-  }
   // After each stage the schedule (flow/schedule.h) decides what follows: the same level again
   // (remeshed, or untangled with the connectivity kept), the next level, the semi-implicit scheme
   // from the start, or the end of the run.
@@ -756,225 +724,382 @@ FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const 
   double lastTau = 0;  // the semi-implicit scheme's last accepted step, carried into the next stage
   TriMesh best;  // the vector scheme's lowest-energy state of the current stage
   double bestEnergy = 0;
-  // A fairing amount (FlowOptions::featureSize) keeps the user's vertices: an isotropic remeshing
-  // first would resample the surface and smooth it below its edge length, whatever the amount.
-  // A large mesh starts coarse (coarseStart: a closed one, or one with a border whose moving part is
-  // large): its levels are added to the schedule's. A coarse remeshing that would make faces cross
-  // is undone; the mesh is remeshed at its own size.
-  const CoarseStart coarse =
-      quality && opt.scheme == Scheme::Vector && !run.timeLimited() ? coarseStart(region) : CoarseStart{};
-  int coarseLevels = coarse.levels;
-  if (coarseLevels > 0 && !remeshMovingRegion(region, false, coarse.coarsening)) coarseLevels = 0;
+  CoarseStart coarse;
+  int coarseLevels = 0;
   int refinements = 0;  // subdivisions made after the first stage
+  bool onSurface = false;
+  // The run's lowest-energy stage end at the current level whose mesh resolves it (keepIfBest), and
+  // the refinements where a converged state was not resolved (resolutionRefines).
+  KeptState kept;
+  int unresolvedRefinements = 0;
+  bool measureEach = false, checkResolution = false, keepEachStage = false;
+  // The moving vertices this level may have (vertexBudget), ×4 per level; the report has the finest's.
+  long long movingBudget = 0;
+  LastStage last;
+  RefusedRemeshing refused;
+};
+
+// The vector scheme descends the elastica energy; the comparison flows run the scheme they have.
+// Scheme::Automatic: the vector scheme, handles or not (the semi-implicit one only where the vector
+// scheme cannot take its first step: fallsBackToSemiImplicit). With the handles' rules the vector
+// scheme converges small meshes with handles in fewer attempts than the semi-implicit one
+// (docs/decisions.md, "The schedule's rules": the automatic scheme).
+Scheme runScheme(const FlowOptions& requested) {
+  Scheme scheme = requested.scheme;
+  if (scheme == Scheme::Automatic) scheme = Scheme::Vector;
+  if (scheme == Scheme::Vector && requested.flow == FlowType::LaplacianOfMeanCurvature) scheme = Scheme::SemiImplicit;
+  if (requested.flow == FlowType::Bilaplacian) scheme = Scheme::Explicit;  // its only scheme (Automatic included)
+  return scheme;
+}
+
+void requireSelectionSize(const MovingRegion& region) {
+  const std::size_t selected = region.selection().size();
+  if (selected != 0 && selected != region.mesh().faces.size())
+    throw InvalidInputError("fair: the selection has " + std::to_string(selected) + " entries for " +
+                            std::to_string(region.mesh().faces.size()) + " faces");
+}
+
+// A fairing amount keeps the user's vertices and connectivity: no refinement, no remeshing. Its
+// one stage leaves the selection as it came, and every step in the history.
+void fairAmount(RegionRun& f) {
+  FlowState state(f.region.copyTakingCaches(), f.opt, f.internal, f.slider);
+  requireMovingVertex(state, !f.region.selection().empty());
+  recordStart(f.report, state);
+  FlowStage stage = beginStage(state, 0);
+  featureSizeStage(state, f.run, stage);
+  endStage(state, stage, 0, f.run, f.region);  // the run's only stage: it started with the run
+  f.report.seconds = f.run.elapsed();
+}
+
+// The semi-implicit pipeline keeps the mesh fit for the operators (FlowOptions::remesh,
+// flow/mesh_quality_stage.h): first the working-resolution floor, within the levels asked for.
+void prepare(RegionRun& f) {
+  MovingRegion& region = f.region;
+  f.quality = f.opt.scheme != Scheme::Explicit && f.opt.remesh;
+  f.stageOpt = f.opt;
+  if (f.quality) f.stageOpt.flipEdges = true;
+  f.wholeMesh = f.quality && region.selection().empty();
+  if (f.wholeMesh) f.input = region.mesh();
+  if (f.quality) {
+    f.level = f.report.preSubdivisions = subdivideToWorkingResolution(region, f.opt);
+    // A selection's guard asks about the faces that move: crossings elsewhere in a scan leave it on.
+    f.report.inputSelfIntersects = region.selection().empty()
+                                       ? selfIntersects(region.mesh())
+                                       : selfIntersects(region.mesh(), &region.roles().activeFace);
+  }
+}
+
+// A fairing amount (FlowOptions::featureSize) keeps the user's vertices: an isotropic remeshing
+// first would resample the surface and smooth it below its edge length, whatever the amount.
+// A large mesh starts coarse (coarseStart: a closed one, or one with a border whose moving part is
+// large): its levels are added to the schedule's. A coarse remeshing that would make faces cross
+// is undone; the mesh is remeshed at its own size.
+void chooseStartingResolution(RegionRun& f) {
+  MovingRegion& region = f.region;
+  FlowReport& report = f.report;
+  const bool quality = f.quality, timeLimited = f.run.timeLimited();
+  f.coarse = quality && f.opt.scheme == Scheme::Vector && !timeLimited ? coarseStart(region) : CoarseStart{};
+  f.coarseLevels = f.coarse.levels;
+  if (f.coarseLevels > 0 && !remeshMovingRegion(region, false, f.coarse.coarsening)) f.coarseLevels = 0;
   // A part remeshed on its surface (remeshTessellation: thin walls that every other remeshing put
   // through each other) is remeshed on its surface later too: curvature-adaptive remeshings free to
   // relax off it pressed rotor's wall's sheets together, and it stalled; kept on it, it became the
   // Clifford torus (docs/decisions.md, "CAD parts").
-  bool onSurface = false;
-  if (coarseLevels > 0) {
+  if (f.coarseLevels > 0) {
     ++report.remeshings;
-    opt.subdivisionLevels += coarseLevels;
-    report.coarseStartLevels = coarseLevels;
-  } else if (quality && !run.timeLimited() && !(genus > 0 && isotropicEdgeMissesThinnest(region)) &&
+    f.opt.subdivisionLevels += f.coarseLevels;
+    report.coarseStartLevels = f.coarseLevels;
+  } else if (quality && !timeLimited && !(f.genus > 0 && isotropicEdgeMissesThinnest(region)) &&
              remeshMovingRegion(region, false)) {
     // A part with handles whose thin walls the isotropic edge would step over is sized by its
     // thinnest feature instead (remeshTessellation, next).
     ++report.remeshings;
-  } else if (quality && !run.timeLimited() && region.selection().empty() && remeshTessellation(region, onSurface)) {
+  } else if (quality && !timeLimited && region.selection().empty() && remeshTessellation(region, f.onSurface)) {
     // A CAD part's flow starts from a fresh triangulation (remeshTessellation). A selection's does
     // not: its remeshing is judged against the scan around it, and on man.off Loop ×2's
     // 50,000-face region (its isotropic remeshing undone: faces crossed the foot beside it) the
     // split mesh's remeshing stacked vertices and was undone too, after 3–4 s of work before the
     // first step (docs/decisions.md, "Regions").
     ++report.remeshings;
-  } else if (quality && !run.timeLimited() && genus > 0 &&
+  } else if (quality && !timeLimited && f.genus > 0 &&
              remeshMovingRegion(region, false, 1, 0, nullptr, kCrossingRefinements)) {
     // Sheets closer than the edge length (femur: 0.4 median edges) made both remeshings cross:
     // refined where they crossed instead (without, the raw scan was untangled into crossing faces
     // and every vector step was refused for them).
     ++report.remeshings;
-  } else if (opt.scheme == Scheme::Vector) {
+  } else if (f.opt.scheme == Scheme::Vector) {
     untangleMovingRegion(region, false, report);
   }
-  // The run's lowest-energy stage end at the current level whose mesh resolves it (keepIfBest), and
-  // the refinements where a converged state was not resolved (resolutionRefines).
-  KeptState kept;
-  int unresolvedRefinements = 0;
+}
+
+// Which stage ends the run keeps and measures, and the moving vertices each level may have.
+void setStageRules(RegionRun& f) {
+  const bool quality = f.quality;
   // The resolution check is the vector scheme's (the default; the semi-implicit scheme's stops are
   // the user's tolerances, which may ask for an early stop), on whole closed meshes with handles.
   // Genus 0 is left as it was: its scans end within 0.2–1.4 % of their Loop-1 energy, and a
   // 162-vertex noisy sphere (tests/plugin/meshlabserver_test.cpp), resolved within 3.3 % at its
   // first stage, was refined there, after which MeshLab's float run and the CLI's double one
   // remeshed it to different vertex counts.
-  const bool measureEach = quality && region.selection().empty();
-  const bool checkResolution = measureEach && genus > 0;
+  f.measureEach = quality && f.region.selection().empty();
+  f.checkResolution = f.measureEach && f.genus > 0;
   // A selection keeps its lowest stage end at the level (keepIfBest), without the resolution
   // check, which is the whole mesh's: on lion-head's recipe region 0 the last of three stages, after
   // a reflow's curvature-adaptive remeshing, ended at E 32.65 where the second had ended at 22.2, and
   // the run said converged on the last (docs/decisions.md, "Regions").
-  const bool keepEachStage = quality && !region.selection().empty();
-  // The moving vertices this level may have (vertexBudget), ×4 per level; the report has the finest's.
-  long long movingBudget = 0;
+  f.keepEachStage = quality && !f.region.selection().empty();
   if (quality) {
-    movingBudget = vertexBudget(region.roles().freeCount, genus);
-    const long long fixed = region.mesh().vertexCount() - region.roles().freeCount;
-    report.vertexBudget = fixed + movingBudget * (1LL << (2 * std::max(0, opt.subdivisionLevels - level)));
+    f.movingBudget = vertexBudget(f.region.roles().freeCount, f.genus);
+    const long long fixed = f.region.mesh().vertexCount() - f.region.roles().freeCount;
+    f.report.vertexBudget =
+        fixed + f.movingBudget * (1LL << (2 * std::max(0, f.opt.subdivisionLevels - f.level)));
   }
-  LastStage last;
-  RefusedRemeshing refused;
-  for (;; ++level) {
-    bool remeshingRefused = false;
-    if (remeshAdaptively) {
-      if (refused.holds(region, level)) {
-        remeshingRefused = true;
-      } else if (remeshMovingRegion(region, true, 1, movingBudget, nullptr, genus > 0 ? kCrossingRefinements : 0,
-                                    onSurface)) {
-        ++report.remeshings;
-      } else {
-        remeshingRefused = true;
-        ++report.remeshingsRefused;
-        refused = RefusedRemeshing{region.mesh(), region.selection(), level};
-      }
-    }
-    remeshAdaptively = false;
-    StageVerdict verdict;
-    bool firstStage = false, refineLater = false;
-    double previousEnergy = 0;
-    if (remeshingRefused && opt.scheme == Scheme::Vector && repeatsLastStage(last, region, level)) {
-      verdict = last.verdict;
-      refineLater = last.refineLater;
-      report.stop = last.stop;
-      previousEnergy = last.verdict.energy;
-    } else {
-      last = LastStage{};
-      last.mesh = region.mesh();
-      last.selection = region.selection();
-      last.level = level;
-      FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
-      requireMovingVertex(state, !region.selection().empty());
-      refineLater = level < opt.subdivisionLevels &&
-                    (opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > opt.targetEdgeLength);
-      const double stageStart = run.elapsed();
-      if (first) {
-        recordStart(report, state);
-        first = false;
-      }
-      FlowStage stage = beginStage(state, level);
-      firstStage = report.stages.empty();
-      StageEnd end = StageEnd::Settled;
-      try {
-        if (opt.scheme == Scheme::Explicit) {
-          end = explicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
-        } else if (opt.scheme == Scheme::Vector) {
-          end = vectorStage(state, run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1),
-                            quality && !report.inputSelfIntersects, coarseLevels > 0 && level > 0 && schedule.reflows() == 0,
-                            firstStage, genus > 0, quality, lastTau, best, bestEnergy);
-          // The stage's output is its lowest-energy state (before any neck formed).
-          if (end == StageEnd::NeckFormed || bestEnergy < state.energy())
-            state = FlowState(best, state.selection(), stageOpt, internal, slider.get());
-        } else {
-          const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
-          end = semiImplicitStage(state, run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance,
-                                  plateau, quality && !report.inputSelfIntersects, lastTau);
-        }
-      } catch (const FlowDivergedError&) {
-        region = state.releaseRegion();  // the restored checkpoint (faces may have been flipped)
-        throw;
-      }
-      endStage(state, stage, stageStart, run, region);
-      verdict = {end, stage.steps, stage.energy};
-      last.verdict = verdict;
-      last.refineLater = refineLater;
-      last.stop = report.stop;
-      if (report.stages.size() >= 2) previousEnergy = report.stages.end()[-2].energy;
-    }
-    Resolution resolution;
-    const bool measured = measureEach && measureResolution(region.mesh(), opt, resolution);
-    if ((measured && resolution.resolved()) || keepEachStage) keepIfBest(kept, region, verdict.energy, level);
-    ScheduleContext context;
-    context.scheme = opt.scheme;
-    context.automatic = requested.scheme == Scheme::Automatic;
-    context.quality = quality;
-    context.firstStage = firstStage;
-    context.refineLater = refineLater;
-    context.previousEnergy = previousEnergy;
-    context.stopped = [&] { return run.stopped || run.limitReached(); };
-    context.needsRemeshing = [&] { return needsRemeshing(region); };
-    NextStage next = schedule.next(verdict, context, report.stop);
-    // A run never says converged on a state its mesh does not resolve: refined where the gap is,
-    // it flows on (kMaxUnresolvedRefinements times at most); else it says stalled.
-    // A surface pressed against itself (self_contact) is a result too, and the same promise: a
-    // knotted tube swollen against itself ended at Loop-1 +4.5 % (knot1).
-    const bool final = report.stop == StopReason::Converged || report.stop == StopReason::SelfContact;
-    if (next == NextStage::Stop && checkResolution && opt.scheme == Scheme::Vector && measured && final &&
-        !resolution.resolved()) {
-      if (unresolvedRefinements < kMaxUnresolvedRefinements && !context.stopped() &&
-          remeshMovingRegion(region, true, 1, movingBudget, &resolution.unresolved, kCrossingRefinements, onSurface)) {
-        ++unresolvedRefinements;
-        ++report.remeshings;
-        --level;
-        continue;
-      }
-      report.stop = StopReason::Stalled;
-    }
-    if (next == NextStage::Stop) break;
-    if (next == NextStage::Refine) {
-      movingBudget *= 4;
-      kept = KeptState{};
-      // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
-      // midpoints' facets would be creases for the finer level to flow out.
-      // A mesh with a border refines only its moving faces: its fixed rows stay the user's.
-      if (coarseLevels > 0 && coarse.onMovingFaces && refinements < coarseLevels)
-        subdivideMovingFaces(region);
-      else if (coarseLevels > 0 && !coarse.onMovingFaces)
-        region.edit([](TriMesh& mesh, std::vector<std::uint8_t>&) {
-          subdivideLoop(mesh);
-          return true;
-        });
-      else
-        subdivideOneLevel(region);
-      ++refinements;
-      continue;
-    }
-    --level;  // the same level again
-    if (next == NextStage::FallBack) {
-      // The stage that took no step is not the run's: it starts over with the other scheme.
-      report.stages.pop_back();
-      opt.scheme = report.scheme = Scheme::SemiImplicit;
-    } else if (next == NextStage::Reflow) {
-      remeshAdaptively = true;
-    } else {
-      untangleMovingRegion(region, true, report);
-    }
+}
+
+// A stage's verdict and what the schedule weighs beside it.
+struct StageOutcome {
+  StageVerdict verdict;
+  bool firstStage = false, refineLater = false;
+  double previousEnergy = 0;
+  bool measured = false;
+  Resolution resolution;
+};
+
+// The reflow's curvature-adaptive remeshing before a stage; true if it was refused.
+bool remeshingRefused(RegionRun& f) {
+  if (!f.remeshAdaptively) return false;
+  f.remeshAdaptively = false;
+  MovingRegion& region = f.region;
+  if (f.refused.holds(region, f.level)) return true;
+  if (remeshMovingRegion(region, true, 1, f.movingBudget, nullptr, f.genus > 0 ? kCrossingRefinements : 0,
+                         f.onSurface)) {
+    ++f.report.remeshings;
+    return false;
   }
-  // The final approach with the connectivity kept: the vector scheme's converged state is the
-  // minimiser of W on this triangulation, whose tangential freedom can trade roundness for energy
-  // where the mesh is irregular; the paper's normal flow, after the vertices are evened out
-  // tangentially, settles where the shape is the surface's, not the triangulation's.
-  if (finalApproach(opt.scheme, quality, run.stopped, report.stop)) {
-    untangleMovingRegion(region, true, report);
-    FlowState state(region.copyTakingCaches(), stageOpt, internal, slider.get());
-    FlowStage stage = beginStage(state, level);
-    const double stageStart = run.elapsed();
-    semiImplicitStage(state, run, stage, opt.energyTolerance, opt.plateauTolerance, false, lastTau);
-    endStage(state, stage, stageStart, run, region);
+  ++f.report.remeshingsRefused;
+  f.refused = RefusedRemeshing{region.mesh(), region.selection(), f.level};
+  return true;
+}
+
+// The stage's flow in the run's scheme, from `state` at `stageStart`.
+StageEnd flowInScheme(RegionRun& f, FlowState& state, FlowStage& stage, const StageOutcome& outcome, double stageStart) {
+  const FlowOptions& opt = f.opt;
+  const bool refineLater = outcome.refineLater;
+  if (opt.scheme == Scheme::Explicit)
+    return explicitStage(state, f.run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, stageStart);
+  if (opt.scheme == Scheme::Vector) {
+    const StageEnd end = vectorStage(
+        state, f.run, stage, kVectorShapeTolerance * (refineLater ? 10 : 1), f.quality && !f.report.inputSelfIntersects,
+        f.coarseLevels > 0 && f.level > 0 && f.schedule.reflows() == 0, outcome.firstStage, f.genus > 0, f.quality,
+        f.lastTau, f.best, f.bestEnergy);
+    // The stage's output is its lowest-energy state (before any neck formed).
+    if (end == StageEnd::NeckFormed || f.bestEnergy < state.energy())
+      state = FlowState(f.best, state.selection(), f.stageOpt, f.internal, f.slider);
+    return end;
   }
-  // The output is never above the run's best state at its final resolution (by more than
-  // kConfirmedPlateau, the schedule's measure of equal energies: two stage ends within it are the
-  // same plateau, and a choice between them would follow the rounding of the input, float or
-  // double, and not the shape).
-  if (kept.level == level && kept.energy < (1 - kConfirmedPlateau) * report.energyFinal) {
-    region.edit([&](TriMesh& mesh, std::vector<std::uint8_t>& selection) {
-      mesh = std::move(kept.mesh);
-      selection = std::move(kept.selection);
+  const double plateau = opt.plateauTolerance * (refineLater ? kSubdivisionPlateauFactor : 1.0);
+  return semiImplicitStage(state, f.run, stage, refineLater ? opt.subdivisionTolerance : opt.energyTolerance, plateau,
+                           f.quality && !f.report.inputSelfIntersects, f.lastTau);
+}
+
+// One stage at the current level, or the last one's verdict where it would repeat it (repeatsLastStage).
+StageOutcome flowStage(RegionRun& f) {
+  MovingRegion& region = f.region;
+  FlowReport& report = f.report;
+  StageOutcome outcome;
+  if (remeshingRefused(f) && f.opt.scheme == Scheme::Vector && repeatsLastStage(f.last, region, f.level)) {
+    outcome.verdict = f.last.verdict;
+    outcome.refineLater = f.last.refineLater;
+    report.stop = f.last.stop;
+    outcome.previousEnergy = f.last.verdict.energy;
+    return outcome;
+  }
+  f.last = LastStage{};
+  f.last.mesh = region.mesh();
+  f.last.selection = region.selection();
+  f.last.level = f.level;
+  FlowState state(region.copyTakingCaches(), f.stageOpt, f.internal, f.slider);
+  requireMovingVertex(state, !region.selection().empty());
+  outcome.refineLater = f.level < f.opt.subdivisionLevels &&
+                        (f.opt.targetEdgeLength <= 0 || state.geometry().meanEdgeLength > f.opt.targetEdgeLength);
+  const double stageStart = f.run.elapsed();
+  if (f.first) {
+    recordStart(report, state);
+    f.first = false;
+  }
+  FlowStage stage = beginStage(state, f.level);
+  outcome.firstStage = report.stages.empty();
+  StageEnd end = StageEnd::Settled;
+  try {
+    end = flowInScheme(f, state, stage, outcome, stageStart);
+  } catch (const FlowDivergedError&) {
+    region = state.releaseRegion();  // the restored checkpoint (faces may have been flipped)
+    throw;
+  }
+  endStage(state, stage, stageStart, f.run, region);
+  outcome.verdict = {end, stage.steps, stage.energy};
+  f.last.verdict = outcome.verdict;
+  f.last.refineLater = outcome.refineLater;
+  f.last.stop = report.stop;
+  if (report.stages.size() >= 2) outcome.previousEnergy = report.stages.end()[-2].energy;
+  return outcome;
+}
+
+// The stage end's resolution, and the stage end kept where it is the level's best.
+void measureStage(RegionRun& f, StageOutcome& outcome) {
+  outcome.measured = f.measureEach && measureResolution(f.region.mesh(), f.opt, outcome.resolution);
+  if ((outcome.measured && outcome.resolution.resolved()) || f.keepEachStage)
+    keepIfBest(f.kept, f.region, outcome.verdict.energy, f.level);
+}
+
+// What the schedule (flow/schedule.h) weighs beside the stage's verdict.
+ScheduleContext scheduleContext(RegionRun& f, const StageOutcome& outcome) {
+  ScheduleContext context;
+  context.scheme = f.opt.scheme;
+  context.automatic = f.requested.scheme == Scheme::Automatic;
+  context.quality = f.quality;
+  context.firstStage = outcome.firstStage;
+  context.refineLater = outcome.refineLater;
+  context.previousEnergy = outcome.previousEnergy;
+  context.stopped = [&f] { return f.run.stopped || f.run.limitReached(); };
+  context.needsRemeshing = [&f] { return needsRemeshing(f.region); };
+  return context;
+}
+
+// A run never says converged on a state its mesh does not resolve: refined where the gap is,
+// it flows on (kMaxUnresolvedRefinements times at most); else it says stalled. True if refined.
+// A surface pressed against itself (self_contact) is a result too, and the same promise: a
+// knotted tube swollen against itself ended at Loop-1 +4.5 % (knot1).
+bool refinedWhereUnresolved(RegionRun& f, const StageOutcome& outcome) {
+  FlowReport& report = f.report;
+  const bool final = report.stop == StopReason::Converged || report.stop == StopReason::SelfContact;
+  if (!(f.checkResolution && f.opt.scheme == Scheme::Vector && outcome.measured && final &&
+        !outcome.resolution.resolved()))
+    return false;
+  if (f.unresolvedRefinements < kMaxUnresolvedRefinements && !(f.run.stopped || f.run.limitReached()) &&
+      remeshMovingRegion(f.region, true, 1, f.movingBudget, &outcome.resolution.unresolved, kCrossingRefinements,
+                         f.onSurface)) {
+    ++f.unresolvedRefinements;
+    ++report.remeshings;
+    return true;
+  }
+  report.stop = StopReason::Stalled;
+  return false;
+}
+
+// The next level: a quarter of the faces' size, the budget ×4, the kept state the old level's.
+void refine(RegionRun& f) {
+  MovingRegion& region = f.region;
+  f.movingBudget *= 4;
+  f.kept = KeptState{};
+  // A coarse start's shape comes smooth from its level, and Loop's masks keep it smooth: the
+  // midpoints' facets would be creases for the finer level to flow out.
+  // A mesh with a border refines only its moving faces: its fixed rows stay the user's.
+  if (f.coarseLevels > 0 && f.coarse.onMovingFaces && f.refinements < f.coarseLevels)
+    subdivideMovingFaces(region);
+  else if (f.coarseLevels > 0 && !f.coarse.onMovingFaces)
+    region.edit([](TriMesh& mesh, std::vector<std::uint8_t>&) {
+      subdivideLoop(mesh);
       return true;
     });
-    report.energyFinal = kept.energy;
+  else
+    subdivideOneLevel(region);
+  ++f.refinements;
+}
+
+// The same level again: with the other scheme, remeshed, or untangled with the connectivity kept.
+void repeatLevel(RegionRun& f, NextStage next) {
+  if (next == NextStage::FallBack) {
+    // The stage that took no step is not the run's: it starts over with the other scheme.
+    f.report.stages.pop_back();
+    f.opt.scheme = f.report.scheme = Scheme::SemiImplicit;
+  } else if (next == NextStage::Reflow) {
+    f.remeshAdaptively = true;
+  } else {
+    untangleMovingRegion(f.region, true, f.report);
   }
-  if (wholeMesh) refuseBrokenOutput(region, std::move(input), opt, report);
-  report.seconds = run.elapsed();
+}
+
+// The stages, level by level, until the schedule stops the run.
+void runStages(RegionRun& f) {
+  for (;; ++f.level) {
+    StageOutcome outcome = flowStage(f);
+    measureStage(f, outcome);
+    const NextStage next = f.schedule.next(outcome.verdict, scheduleContext(f, outcome), f.report.stop);
+    if (next == NextStage::Stop && refinedWhereUnresolved(f, outcome)) {
+      --f.level;
+      continue;
+    }
+    if (next == NextStage::Stop) return;
+    if (next == NextStage::Refine) {
+      refine(f);
+      continue;
+    }
+    --f.level;
+    repeatLevel(f, next);
+  }
+}
+
+// The final approach with the connectivity kept: the vector scheme's converged state is the
+// minimiser of W on this triangulation, whose tangential freedom can trade roundness for energy
+// where the mesh is irregular; the paper's normal flow, after the vertices are evened out
+// tangentially, settles where the shape is the surface's, not the triangulation's.
+void flowFinalApproach(RegionRun& f) {
+  if (!finalApproach(f.opt.scheme, f.quality, f.run.stopped, f.report.stop)) return;
+  untangleMovingRegion(f.region, true, f.report);
+  FlowState state(f.region.copyTakingCaches(), f.stageOpt, f.internal, f.slider);
+  FlowStage stage = beginStage(state, f.level);
+  const double stageStart = f.run.elapsed();
+  semiImplicitStage(state, f.run, stage, f.opt.energyTolerance, f.opt.plateauTolerance, false, f.lastTau);
+  endStage(state, stage, stageStart, f.run, f.region);
+}
+
+// The output is never above the run's best state at its final resolution (by more than
+// kConfirmedPlateau, the schedule's measure of equal energies: two stage ends within it are the
+// same plateau, and a choice between them would follow the rounding of the input, float or
+// double, and not the shape). A whole mesh's output is then checked against its input.
+void checkOutput(RegionRun& f) {
+  FlowReport& report = f.report;
+  if (f.kept.level == f.level && f.kept.energy < (1 - kConfirmedPlateau) * report.energyFinal) {
+    f.region.edit([&](TriMesh& mesh, std::vector<std::uint8_t>& selection) {
+      mesh = std::move(f.kept.mesh);
+      selection = std::move(f.kept.selection);
+      return true;
+    });
+    report.energyFinal = f.kept.energy;
+  }
+  if (f.wholeMesh) refuseBrokenOutput(f.region, std::move(f.input), f.opt, report);
+  report.seconds = f.run.elapsed();
   if (report.history.back().step != report.steps)
-    report.history.push_back({report.steps, run.time, report.seconds, report.energyFinal});
+    report.history.push_back({report.steps, f.run.time, report.seconds, report.energyFinal});
+}
+
+// fairMasked() on its region: the mesh and the selection as the run leaves them stay in `region`.
+// A fairing amount flows once; any other run is prepared, starts at its resolution, flows in
+// stages (the schedule deciding after each), approaches the end, and has its output checked.
+FlowReport fairRegion(MovingRegion& region, const FlowOptions& requested, const InternalFlowOptions& internal,
+                      const StageEnded& stageEnded) {
+  FlowOptions opt = requested;
+  const int genus = closedGenus(region.topology());
+  opt.scheme = runScheme(requested);
+  FlowReport report;
+  report.scheme = opt.scheme;
+  Run run{opt, internal, report, stageEnded};
+  region.setDeadline(run.deadline());
+  requireSelectionSize(region);
+  std::unique_ptr<BoundarySlider> slider;
+  if (opt.boundary == BoundaryMode::Slide) slider = std::make_unique<BoundarySlider>(region.topology(), region.mesh().positions);
+  RegionRun f(region, opt, requested, internal, run, report, slider.get(), genus);
+  if (opt.scheme == Scheme::Vector && run.timeLimited()) {
+    fairAmount(f);
+    return report;
+  }
+  prepare(f);
+  chooseStartingResolution(f);
+  setStageRules(f);
+  runStages(f);
+  flowFinalApproach(f);
+  checkOutput(f);
   return report;
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/incomplete_cholesky_cg.h"
+#include "flow/conjugate_gradients.h"
 
 #include <Eigen/IterativeLinearSolvers>
 
@@ -23,29 +24,21 @@ struct IncompleteCholeskyCg::Impl {
   const Eigen::SparseMatrix<double>* A = nullptr;
   bool ready = false;
 
-  // Conjugate gradients on one column from x = 0; the iterations taken, or −1.
+  // Conjugate gradients on one column from x = 0, stopping on the true residual ‖A x − b‖; the
+  // iterations taken, or −1.
   int column(const Eigen::VectorXd& b, Eigen::VectorXd& x, double tolerance, int maxIterations) const {
-    x.setZero(b.size());
-    const double target = tolerance * b.norm();
-    Eigen::VectorXd r = b, z = factor.solve(r), p = z, Ap;
-    double rz = r.dot(z), residual = r.norm();
-    for (int k = 0;; ++k) {
-      if (residual <= target) return k;
-      if (k == maxIterations) return -1;
-      if (k >= kJudgeAfter && residual > kBehind * b.norm() * std::pow(tolerance, double(k) / maxIterations)) return -1;
-      Ap.noalias() = *A * p;
-      const double curvature = p.dot(Ap);
-      if (!(curvature > 0)) return -1;
-      const double alpha = rz / curvature;
-      x += alpha * p;
-      r -= alpha * Ap;
-      residual = r.norm();
-      if (!std::isfinite(residual)) return -1;
-      z = factor.solve(r);
-      const double next = r.dot(z);
-      p = z + (next / rz) * p;
-      rz = next;
-    }
+    const double scale = b.norm(), target = tolerance * scale;
+    auto rule = [&](Eigen::Index, int k, const auto& r, double) {
+      const double residual = r.norm();
+      if (!std::isfinite(residual)) return CgVerdict::GiveUp;
+      if (residual <= target) return CgVerdict::Converged;
+      if (k >= kJudgeAfter && residual > kBehind * scale * std::pow(tolerance, double(k) / maxIterations))
+        return CgVerdict::GiveUp;
+      return CgVerdict::Continue;
+    };
+    return conjugateGradients(
+        b, x, [&](const Eigen::VectorXd& p, Eigen::VectorXd& Ap) { Ap.noalias() = *A * p; },
+        [&](const Eigen::VectorXd& r, Eigen::VectorXd& z) { z = factor.solve(r); }, rule, maxIterations);
   }
 };
 

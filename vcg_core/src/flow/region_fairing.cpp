@@ -356,7 +356,8 @@ RegionRun runFrom(const TriMesh& mesh, const std::vector<std::uint8_t>& selectio
 // fairGuarded with Scheme::Automatic (the vector scheme), and if its result does not resolve the
 // region (region_resolution.h: a faceted lid), the semi-implicit scheme from the same input too,
 // whose steps move vertices only along their normals and whose tangential drift evens them out:
-// the one whose region costs less once its mesh's errors are counted (resolvedEnergy) comes back.
+// a final one (converged, resolved) over one that is not, else the one whose region costs less
+// once its mesh's errors are counted (resolvedEnergy) comes back.
 // Neither is better everywhere: on lion-head's recipe regions the vector scheme's lids cost up to
 // twice the semi-implicit result, and where it does not facet it ends lower (docs/decisions.md,
 // "Regions"). The second run may take kSecondRunAttempts times the first run's
@@ -379,6 +380,10 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
   };
   auto canRun = [&](const FlowOptions& o) { return o.maxSteps > 0 && (!(opt.maxSeconds > 0) || o.maxSeconds > 0); };
   const auto converged = [](const RegionRun& r) { return r.report.stop == StopReason::Converged && r.resolution.resolved(); };
+  // A result fair() may call final: converged (or pressed against itself) and resolved.
+  const auto final = [](const RegionRun& r) {
+    return (r.report.stop == StopReason::Converged || r.report.stop == StopReason::SelfContact) && r.resolution.resolved();
+  };
   RegionRun probe, vector, semi;
   // Only where the user's step limit leaves the probe and the semi-implicit run room beside the
   // whole vector run: under a tighter one they would take the attempts it needs.
@@ -404,11 +409,16 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
       spend(semi.report);
     }
   }
-  // The semi-implicit result comes back if it is the only one, or changed the region and costs
-  // less (or the vector run changed nothing).
+  // The semi-implicit result comes back if it is the only one, or changed the region and is final
+  // where the vector result is not, or neither or both are and it costs less (or the vector run
+  // changed nothing). A final result beats a lid whose Loop surface costs less: that surface is
+  // not the mesh that comes back, and the lid would say stalled (lion-head's seeded region 1:
+  // the lid 30.1 Loop-subdivided, the semi-implicit result 37.6, converged, resolved;
+  // docs/benchmarks.md, "Regions: a final result beats a lid").
   const bool takeSemi = semi.ran && semi.report.stop != StopReason::Unchanged &&
                         (!vector.ran || vector.report.stop == StopReason::Unchanged ||
-                         semi.resolution.resolvedEnergy() < vector.resolution.resolvedEnergy());
+                         (final(semi) != final(vector) ? final(semi)
+                                                       : semi.resolution.resolvedEnergy() < vector.resolution.resolvedEnergy()));
   // Neither changed the region nor the vector scheme ran (the user's time limit): the probe's result.
   RegionRun& chosen = takeSemi ? semi : vector.ran ? vector : probe.ran ? probe : semi;
   const bool probeCameBack = &chosen == &probe;

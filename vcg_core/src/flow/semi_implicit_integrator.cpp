@@ -3,8 +3,7 @@
 #include <elastica/laplacian.h>
 #include "flow/flow_speed.h"
 #include "flow/semi_implicit_integrator.h"
-#include "flow/semi_implicit_system.h"
-#include "flow/spd_solver.h"
+#include "flow/step_holds.h"
 #include "support/parallel.h"
 
 #include <Eigen/SparseCore>
@@ -36,13 +35,6 @@ constexpr double kEnergySlack = 1e-4;
 // tuned: it lies below the patches measured.
 constexpr int kPreconditionFromRows = 500;
 
-// A step that failed on a few vertices is tried again with those vertices (and their rings) held
-// where they were, instead of at half the step everywhere (SemiImplicitIntegrator::holdCulprits):
-// at most kMaxCulprits vertices per round, kMaxHoldRounds rounds.
-constexpr int kMaxCulprits = 16, kMaxHoldRounds = 3;
-// Faces about to cross hold their free corners (and rings) too; a contact zone spans more vertices
-// than a turned face does (as VectorIntegrator's).
-constexpr int kMaxContactCulprits = 4 * kMaxCulprits;
 // The culprits of an energy rise: the vertices whose energy rose most, until they make up this
 // many times the rise. On the armadillo's 1,978-edge hole 1.25 still left 23 attempts of its
 // coarse flow rejected in a row (the worst vertex rose by 1.2 where the step rose by 1.4), 1.0
@@ -51,35 +43,13 @@ constexpr double kCoverRise = 1.0;
 
 }  // namespace
 
-struct SemiImplicitIntegrator::SparseSolver {
-  SemiImplicitSystem system;
-  SpdSolver spd;
-  Eigen::VectorXd delta;
-};
-
-// Rows of the system (the free vertices, in vertex order) whenever the state's connectivity
-// changed: the sparsity pattern follows it. If the rows are the same (edge flips move no vertex),
-// the last factorisation stays, as a preconditioner.
-void SemiImplicitIntegrator::buildRows(const FlowState& state) {
-  if (connectivityVersion_ == state.connectivityVersion()) return;
-  const Topology& topo = state.topology();
-  std::vector<int> rows(topo.vertexCount(), -1);
-  int row = 0;
-  for (int v = 0; v < topo.vertexCount(); ++v)
-    if (state.roles().free[v]) rows[v] = row++;
-  if (solver_ && rows == freeIndex_) {
-    solver_->system.reset();
-    solver_->spd.patternChanged();
-  } else {
-    solver_.reset();
-  }
-  freeIndex_.swap(rows);
-  connectivityVersion_ = state.connectivityVersion();
-}
+// The rows follow the state's connectivity; after edge flips the last factorisation stays, as a
+// preconditioner (StepRows::update).
+void SemiImplicitIntegrator::buildRows(const FlowState& state) { rows_.update(state, true); }
 
 bool SemiImplicitIntegrator::solve() {
-  SparseSolver& s = *solver_;
-  return s.spd.solveStep(s.system.matrix(), s.system.rhs(), s.delta, kPreconditionFromRows);
+  StepSolver& s = *rows_.solver;
+  return s.spd.solveStep(s.system.matrix(), s.system.rhs(), delta_, kPreconditionFromRows);
 }
 
 void SemiImplicitIntegrator::speed(FlowState& state) {
@@ -108,14 +78,13 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   const Topology& topo = state.topology();
   const Geometry& geo = state.geometry();
   const int nv = topo.vertexCount(), n = state.roles().freeCount;
-  if (!solver_) solver_ = std::make_shared<SparseSolver>();
 
   // (M_ff + τ/2 · C_fa M_aa⁻¹ C_af) δ_f = τ M_ff F_f: to leading order F(P + δN) ≈ F − ½Δ_B²δ,
   // so the stiff fourth-order part is taken at the new time and everything else is lagged.
-  solver_->system.assemble(topo, geo, state.roles().active, freeIndex_, n, speed_, tau);
+  rows_.solver->system.assemble(topo, geo, state.roles().active, rows_.index, n, speed_, tau);
   saved_ = positions;
   if (!solve()) return reject();
-  const Eigen::VectorXd& delta = solver_->delta;
+  const Eigen::VectorXd& delta = delta_;
 
   const double energyBefore = state.energy();
   const double energyLimit = energyBefore * (1 + kEnergySlack) + 1e-12;
@@ -124,7 +93,7 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   // The largest jump, as a multiple of what InternalFlowOptions::maxJump allows at its vertex.
   double overshoot = 0;
   for (int v = 0; v < nv; ++v) {
-    const int r = freeIndex_[v];
+    const int r = rows_.index[v];
     if (r < 0) continue;
     if (!std::isfinite(delta[r])) return reject();
     double ring = 0;
@@ -138,7 +107,7 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   if (lastStepShortened_ && !state.internalOptions().shortenJumps) return reject();
   const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;
   for (int v = 0; v < nv; ++v) {
-    const int r = freeIndex_[v];
+    const int r = rows_.index[v];
     if (r >= 0) positions[v] += scale * delta[r] * geo.vertexNormal[v];
   }
   state.invalidate();
@@ -166,7 +135,7 @@ bool SemiImplicitIntegrator::tryStep(FlowState& state, double tau) {
   }
   double largest = 0;
   for (int v = 0; v < nv; ++v)
-    if (freeIndex_[v] >= 0 && !held_[v]) largest = std::max(largest, scale * std::abs(delta[freeIndex_[v]]));
+    if (rows_.index[v] >= 0 && !held_[v]) largest = std::max(largest, scale * std::abs(delta[rows_.index[v]]));
   lastNormalStep_ = largest;
   lastEnergyDecrease_ = energyBefore - state.energy();
 

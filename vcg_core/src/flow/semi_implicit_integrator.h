@@ -8,6 +8,7 @@
 #pragma once
 
 #include "flow/flow_state.h"
+#include "flow/step_rows.h"
 #include "flow/tangential.h"
 #include "mesh/crossing_cache.h"
 
@@ -43,7 +44,7 @@ class SemiImplicitIntegrator {
  private:
   void speed(FlowState& state);
   void buildRows(const FlowState& state);
-  /// δ for the assembled system (into solver_->delta); false if the matrix does not factor.
+  /// δ for the assembled system (into delta_); false if the matrix does not factor.
   bool solve();
   /// Whether face f's normal turned against faceNormalBefore_ (the normals before the step).
   bool turnedOver(const Geometry& geo, int f) const { return geo.faceNormal[f].dot(faceNormalBefore_[f]) < 0; }
@@ -74,8 +75,8 @@ class SemiImplicitIntegrator {
   bool lastStepShortened_ = false;
   bool guardEmbedding_ = false;
   long long crossingRejections_ = 0;
-  long long connectivityVersion_ = -1;  // of the state that freeIndex_ and the solver were built for
-  std::vector<int> freeIndex_;    // vertex → row of the system, or -1
+  StepRows rows_;  // the free vertices' rows, the system and its factorisation
+  Eigen::VectorXd delta_;
   std::vector<double> lh_, speed_;
   std::vector<Vec3> saved_, driftSaved_, faceNormalBefore_, drift_, stepped_;
   CrossingCache crossing_;  // the embedding guard's test, its fixed faces binned once
@@ -84,8 +85,6 @@ class SemiImplicitIntegrator {
   std::vector<int> culprits_;
   std::vector<std::pair<double, int>> rises_;
   DriftScratch driftScratch_;
-  struct SparseSolver;  // the system and Eigen's/CHOLMOD's factorisation, pattern analysed once per topology
-  std::shared_ptr<SparseSolver> solver_;
 };
 
 }  // namespace elastica

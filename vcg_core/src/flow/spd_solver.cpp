@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/spd_solver.h"
+#include "flow/conjugate_gradients.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -130,53 +131,24 @@ void SpdSolver::solveDense(const Dense& b, Dense& x) const {
 void SpdSolver::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const { solveDense(b, x); }
 void SpdSolver::solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const { solveDense(B, X); }
 
-// Conjugate gradients on each column of b (a vector is one column), in step: one solve with the
-// factorisation per iteration for all columns; a column stops once it meets the tolerance.
+// Conjugate gradients preconditioned with the held factorisation, stopping on the preconditioned
+// residual r·z relative to its start (a column with b = 0 is solved by x = 0).
 template <class Dense>
 int SpdSolver::conjugateGradients(const Eigen::SparseMatrix<double>& A, const Dense& b, Dense& x, double tolerance,
                                   int maxIterations) const {
   if (!factored_ || A.rows() != b.rows()) return -1;
-  const Eigen::Index columns = b.cols();
-  x.setZero(b.rows(), columns);
-  Dense r = b, z, p, Ap;
-  solveDense(r, z);
-  Eigen::VectorXd start(columns), rz(columns);
-  std::vector<bool> done(columns, false);
-  for (Eigen::Index c = 0; c < columns; ++c) {
-    start[c] = rz[c] = r.col(c).dot(z.col(c));
-    if (!(start[c] > 0)) {
-      if (start[c] != 0) return -1;
-      done[c] = true;  // b = 0: x = 0 solves it
+  Eigen::VectorXd start(b.cols());
+  auto rule = [&](Eigen::Index c, int k, const auto&, double rz) {
+    if (k == 0) {
+      start[c] = rz;
+      if (!(rz > 0)) return rz == 0 ? CgVerdict::Converged : CgVerdict::GiveUp;
+      return CgVerdict::Continue;
     }
-  }
-  auto allDone = [&] { return std::all_of(done.begin(), done.end(), [](bool d) { return d; }); };
-  p = z;
-  for (int k = 1; k <= maxIterations; ++k) {
-    if (allDone()) return k - 1;
-    Ap.noalias() = A.selfadjointView<Eigen::Lower>() * p;
-    for (Eigen::Index c = 0; c < columns; ++c) {
-      if (done[c]) continue;
-      const double curvature = p.col(c).dot(Ap.col(c));
-      if (!(curvature > 0)) return -1;
-      const double alpha = rz[c] / curvature;
-      x.col(c) += alpha * p.col(c);
-      r.col(c) -= alpha * Ap.col(c);
-    }
-    solveDense(r, z);
-    for (Eigen::Index c = 0; c < columns; ++c) {
-      if (done[c]) continue;
-      const double next = r.col(c).dot(z.col(c));
-      if (!std::isfinite(next)) return -1;
-      if (next <= tolerance * tolerance * start[c]) {
-        done[c] = true;
-        p.col(c).setZero();  // A·0 = 0: a finished column adds nothing to the product
-        continue;
-      }
-      p.col(c) = z.col(c) + (next / rz[c]) * p.col(c);
-      rz[c] = next;
-    }
-  }
-  return allDone() ? maxIterations : -1;
+    return rz <= tolerance * tolerance * start[c] ? CgVerdict::Converged : CgVerdict::Continue;
+  };
+  return elastica::conjugateGradients(
+      b, x, [&](const Dense& p, Dense& Ap) { Ap.noalias() = A.selfadjointView<Eigen::Lower>() * p; },
+      [&](const Dense& r, Dense& z) { solveDense(r, z); }, rule, maxIterations);
 }
 
 int SpdSolver::solvePreconditioned(const Eigen::SparseMatrix<double>& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,

@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "flow/semi_implicit_system.h"
-#include "flow/spd_solver.h"
+#include "flow/step_holds.h"
 #include "flow/vector_integrator.h"
 #include "support/parallel.h"
 
@@ -29,15 +28,6 @@ constexpr double kEnergySlack = 1e-9;
 // VectorIntegrator::saddleStiffness the H² is H² + max(0, −K): on a saddle (a handle's tunnel,
 // H ≈ 0, K < 0) the principal curvatures are ±√−K, which H² alone does not see.
 constexpr double kCurvatureStiffness = 8;
-// A step refused for a few vertices (faces turned over at their corners, or an energy rise that
-// a few vertices' terms account for) is tried again with those vertices and their rings held
-// where they were: at most kMaxCulprits per round, kMaxHoldRounds rounds (as the semi-implicit
-// scheme's holdCulprits). The dino lost 9 attempts in a row to one face turning over, and the
-// ×0.5 that each refusal cost τ took 30 more steps to win back.
-constexpr int kMaxCulprits = 16, kMaxHoldRounds = 3;
-// Faces about to cross hold their corners (and rings) too; a contact zone spans more vertices than
-// a turned face does.
-constexpr int kMaxContactCulprits = 4 * kMaxCulprits;
 // From this many rows on, a step is first solved by conjugate gradients preconditioned with an
 // earlier step's factorisation (SpdSolver::solveStep; the semi-implicit scheme does so from 500
 // rows): a step's matrix differs from the last one by its τ (×2 or ×0.5) and the geometry's small
@@ -62,34 +52,19 @@ constexpr int kSecantMemory = 5;
 
 }  // namespace
 
-struct VectorIntegrator::SparseSolver {
-  SemiImplicitSystem system;
-  SpdSolver spd;
-};
-
 VectorIntegrator::VectorIntegrator() : secant_(kSecantMemory) {}
 
-void VectorIntegrator::buildRows(const FlowState& state) {
-  if (connectivityVersion_ == state.connectivityVersion()) return;
-  const Topology& topo = state.topology();
-  freeIndex_.assign(topo.vertexCount(), -1);
-  int row = 0;
-  for (int v = 0; v < topo.vertexCount(); ++v)
-    if (state.roles().free[v]) freeIndex_[v] = row++;
-  freeRowCount_ = row;
-  solver_ = std::make_shared<SparseSolver>();
-  connectivityVersion_ = state.connectivityVersion();
-}
+void VectorIntegrator::buildRows(const FlowState& state) { rows_.update(state, false); }
 
 Eigen::MatrixXd VectorIntegrator::freeRows(const std::vector<Vec3>& values) const {
-  Eigen::MatrixXd rows(freeRowCount_, 3);
-  for (std::size_t v = 0; v < freeIndex_.size(); ++v)
-    if (freeIndex_[v] >= 0) rows.row(freeIndex_[v]) = values[v].transpose();
+  Eigen::MatrixXd rows(rows_.count, 3);
+  for (std::size_t v = 0; v < rows_.index.size(); ++v)
+    if (rows_.index[v] >= 0) rows.row(rows_.index[v]) = values[v].transpose();
   return rows;
 }
 
 bool VectorIntegrator::solveRows(const Eigen::MatrixXd& rhs, Eigen::MatrixXd& x) {
-  return solver_->spd.solveStep(solver_->system.matrix(), rhs, x, kPreconditionFromRows);
+  return rows_.solver->spd.solveStep(rows_.solver->system.matrix(), rhs, x, kPreconditionFromRows);
 }
 
 // δ = −H·∂W/∂X: the plain step (H = H₀ = τ/4 · K⁻¹) or, with quasiNewton and pairs, L-BFGS's H.
@@ -105,9 +80,9 @@ bool VectorIntegrator::solve(const std::vector<Vec3>& gradient, double tau) {
     else secant_.clear();
   }
   if (!lastStepAccelerated_ && !applyH0(g, hg)) return false;
-  delta_.assign(freeIndex_.size(), Vec3::Zero());
-  for (std::size_t v = 0; v < freeIndex_.size(); ++v)
-    if (freeIndex_[v] >= 0) delta_[v] = -hg.row(freeIndex_[v]).transpose();
+  delta_.assign(rows_.index.size(), Vec3::Zero());
+  for (std::size_t v = 0; v < rows_.index.size(); ++v)
+    if (rows_.index[v] >= 0) delta_[v] = -hg.row(rows_.index[v]).transpose();
   return true;
 }
 
@@ -158,7 +133,7 @@ bool VectorIntegrator::addBarrierStiffness(const Topology& topo, const Geometry&
       }
     }
   }
-  if (any) solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, 0.25 * tau);
+  if (any) rows_.solver->system.addEdgeLaplacian(topo, edgeScratch_, rows_.index, 0.25 * tau);
   return any;
 }
 
@@ -189,7 +164,7 @@ double VectorIntegrator::jumpOvershoot(const FlowState& state) const {
   const Topology& topo = state.topology();
   double overshoot = 0;
   for (int v = 0; v < topo.vertexCount(); ++v) {
-    if (freeIndex_[v] < 0) continue;
+    if (rows_.index[v] < 0) continue;
     const double move = delta_[v].norm();
     if (!std::isfinite(move)) return move;
     double ring = 0;
@@ -201,7 +176,7 @@ double VectorIntegrator::jumpOvershoot(const FlowState& state) const {
   double strain = 0;
   for (int e = 0; e < topo.edgeCount(); ++e) {
     const auto& ev = topo.edgeVertices(e);
-    if (freeIndex_[ev[0]] < 0 && freeIndex_[ev[1]] < 0) continue;
+    if (rows_.index[ev[0]] < 0 && rows_.index[ev[1]] < 0) continue;
     const double stretch = (delta_[ev[0]] - delta_[ev[1]]).norm();
     if (stretch > 0) strain = std::max(strain, stretch / (kMaxStepStrain * (saved_[ev[0]] - saved_[ev[1]]).norm()));
   }
@@ -256,7 +231,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   if (static_cast<int>(damping_.size()) != nv) damping_.assign(nv, 0.0);  // a new mesh
   overshot_.clear();
   auto assemble = [&](bool barrierStiffness) {
-    solver_->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, freeIndex_, state.roles().freeCount,
+    rows_.solver->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, rows_.index, state.roles().freeCount,
                                    1.0, 0.5 * tau);
     edgeScratch_.resize(topo.edgeCount());
     auto bend = [&](int v) { return curv.H[v] * curv.H[v] + (saddleStiffness_ ? std::max(0.0, -curv.K[v]) : 0.0); };
@@ -265,10 +240,10 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
       const double h2 = 0.5 * (bend(ev[0]) + bend(ev[1]));
       edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
     }
-    solver_->system.addEdgeLaplacian(topo, edgeScratch_, freeIndex_, kCurvatureStiffness * tau);
+    rows_.solver->system.addEdgeLaplacian(topo, edgeScratch_, rows_.index, kCurvatureStiffness * tau);
     const bool withBarrier = barrierStiffness && addBarrierStiffness(topo, geo, positions, activeFace, tau);
     for (int v = 0; v < nv; ++v)
-      if (freeIndex_[v] >= 0 && damping_[v] > 0) solver_->system.scaleDiagonal(freeIndex_[v], 1 + damping_[v]);
+      if (rows_.index[v] >= 0 && damping_[v] > 0) rows_.solver->system.scaleDiagonal(rows_.index[v], 1 + damping_[v]);
     return withBarrier;
   };
   if (!retryPlain_) {
@@ -293,7 +268,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   held_.assign(nv, 0);
   for (int round = 0;; ++round) {
     for (int v = 0; v < nv; ++v)
-      if (freeIndex_[v] >= 0) positions[v] = held_[v] ? saved_[v] : Vec3(saved_[v] + scale * delta_[v]);
+      if (rows_.index[v] >= 0) positions[v] = held_[v] ? saved_[v] : Vec3(saved_[v] + scale * delta_[v]);
     state.invalidate();
     const Geometry& moved = state.geometryOnly();
     culprits_.clear();
@@ -342,7 +317,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     }
     bool more = false;
     auto hold = [&](int v) {
-      if (freeIndex_[v] >= 0 && !held_[v]) held_[v] = 1, more = true;
+      if (rows_.index[v] >= 0 && !held_[v]) held_[v] = 1, more = true;
     };
     for (int c : culprits_) {
       hold(c);
@@ -362,7 +337,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     while (2 * alpha <= limit) {
       const double trial = 2 * alpha;
       for (int v = 0; v < nv; ++v)
-        if (freeIndex_[v] >= 0) positions[v] = saved_[v] + trial * delta_[v];
+        if (rows_.index[v] >= 0) positions[v] = saved_[v] + trial * delta_[v];
       state.invalidate();
       const Geometry& moved = state.geometryOnly();
       bool turned = false;
@@ -374,12 +349,12 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
       energyAfter_ = w;
     }
     for (int v = 0; v < nv; ++v)
-      if (freeIndex_[v] >= 0) positions[v] = saved_[v] + alpha * delta_[v];
+      if (rows_.index[v] >= 0) positions[v] = saved_[v] + alpha * delta_[v];
     state.invalidate();
     if (alpha > 1 && guardEmbedding_ && crossing_.crosses(state.mesh(), activeFace)) {
       alpha = 1;  // the step itself passed the guard
       for (int v = 0; v < nv; ++v)
-        if (freeIndex_[v] >= 0) positions[v] = saved_[v] + scale * delta_[v];
+        if (rows_.index[v] >= 0) positions[v] = saved_[v] + scale * delta_[v];
       state.invalidate();
       energyAfter_ = bendingEnergy(topo, state.geometryOnly(), positions, active, bending_);
     }
@@ -387,7 +362,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
   }
   double largest = 0, largestNormal = 0;
   for (int v = 0; v < nv; ++v) {
-    if (freeIndex_[v] < 0) continue;
+    if (rows_.index[v] < 0) continue;
     const Vec3 d = positions[v] - saved_[v];
     largest = std::max(largest, d.norm());
     largestNormal = std::max(largestNormal, std::abs(d.dot(normalBefore_[v])));

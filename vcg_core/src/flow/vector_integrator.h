@@ -14,6 +14,7 @@
 #include "flow/bending_energy.h"
 #include "flow/flow_state.h"
 #include "flow/secant_pairs.h"
+#include "flow/step_rows.h"
 #include "mesh/crossing_cache.h"
 
 #include <cstdint>
@@ -109,9 +110,7 @@ class VectorIntegrator {
   double startEnergy_ = 0;
   bool pairPending_ = false;  // the last attempt was accepted: its pair is formed at the next attempt's start
   long long crossingRejections_ = 0, acceleratedRefusals_ = 0, gradientEvaluations_ = 0;
-  long long connectivityVersion_ = -1;
-  std::vector<int> freeIndex_;
-  int freeRowCount_ = 0;
+  StepRows rows_;  // the free vertices' rows, the system and its factorisation
   double quasiNewtonFrom_ = 0;
   std::vector<double> edgeScratch_;
   std::vector<int> cornerEdge_;
@@ -128,8 +127,6 @@ class VectorIntegrator {
   Eigen::MatrixXd previousX_, previousGradient_;  // free rows at the last attempt's start
   std::vector<std::uint8_t> previousFree_;
   CrossingCache crossing_;  // the embedding guard's test, the fixed faces' grid kept across attempts
-  struct SparseSolver;
-  std::shared_ptr<SparseSolver> solver_;
 };
 
 }  // namespace elastica

@@ -218,7 +218,7 @@ class MonotonePatch {
     const PatchMeasure m = measurePatch(sub_, patchFace_);
     const PatchMeasure& before = kept_.measure;
     const bool lowerAngle = m.minAngleDegrees < std::min(before.minAngleDegrees, kTargetAngleDegrees) - 1e-9;
-    const double reference = energyFrom.value_or(before.energy);
+    const double reference = std::max(energyFrom.value_or(before.energy), flatAtPatchResolution_.value_or(-HUGE_VAL));
     const bool higherEnergy = energy && !(m.energy <= reference + kEnergySlack * std::max(std::abs(reference), 1.0));
     // Faces that cross (the patch through itself or its surroundings within the piece) undo a
     // stage too: the fill's flow runs without the fairing's embedding guard.
@@ -226,7 +226,11 @@ class MonotonePatch {
     // surface around it makes every patch cross, and then no stage can be judged by it.)
     const bool crossing = !lowerAngle && !higherEnergy && !keptCrosses_ && selfIntersects(sub_, &patchFace_);
     const bool keep = !lowerAngle && !higherEnergy && !crossing;
-    if (keep) kept_ = {sub_, patchFace_, sigma_, m};
+    if (keep) {
+      kept_ = {sub_, patchFace_, sigma_, m};
+      triangulationKept_ = false;
+      if (m.minAngleDegrees >= kTargetAngleDegrees) flatAtPatchResolution_.reset();
+    }
     record(stage, keep, m, steps,
            keep ? "" : lowerAngle ? "smallest angle lower" : higherEnergy ? "energy higher" : "faces cross");
     return keep;
@@ -244,6 +248,19 @@ class MonotonePatch {
     s.kept = kept;
     s.why = kept ? "" : "not kept with the next stage";
   }
+  // A patch with needles (below the target angle) is no energy to hold a finer patch to: a fan
+  // counts each crease once, over coarse areas, and the same flat fill refined reads higher without
+  // changing shape (a 21-edge hole in CGAL's dino: 26.6 against 41.9), so every flow was undone
+  // there and the needles stayed. From a triangulation with needles on, and while the patch kept
+  // has needles, a stage is judged against the larger of the kept patch's energy and the flat
+  // fill's at the refined resolution (`energy`), the start it must still beat.
+  void judgeAgainstTheRefinedFill(double energy) {
+    if (kept_.measure.minAngleDegrees < kTargetAngleDegrees) flatAtPatchResolution_ = energy;
+  }
+  // The energy the next stage is judged against (the report's energy before the flow).
+  double reference() const { return std::max(kept_.measure.energy, flatAtPatchResolution_.value_or(-HUGE_VAL)); }
+  // True while no stage after the triangulation has been kept.
+  bool triangulationKept() const { return triangulationKept_; }
   // Ends with the last kept patch.
   void restore() {
     sub_ = kept_.sub;
@@ -264,6 +281,8 @@ class MonotonePatch {
   HoleReport& hole_;
   PatchSnapshot kept_;
   bool keptCrosses_ = false;
+  bool triangulationKept_ = true;
+  std::optional<double> flatAtPatchResolution_;  // judgeAgainstTheRefinedFill's, while the kept patch has needles
   std::size_t noted_ = 0;  // the stage note() recorded
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
@@ -307,6 +326,12 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   PatchRefinementOptions refinement = opt.refinement;
   refinement.density /= lengthScale;
   refinePatch(sub, patchFace, sigma, refinement);
+  // No vertex inside, needles, and a border that allows better: refined again to the border's own
+  // edge lengths (CGAL's bull: a 21-edge hole stayed a fan at 10.9 deg where the border allows 22.5).
+  if (sub.vertexCount() == firstNew &&
+      smallestAngleDegrees(sub, patchFace) < std::min(kTargetAngleDegrees, hole.borderBoundDegrees) &&
+      sizeBorderByItsOwnEdges(sub, patchFace, sigma))
+    refinePatch(sub, patchFace, sigma, refinement);
   if (opt.stopAfter == FillStage::Refinement) return;
   // A small hole: the triangulation is its patch, and the refinement's Delaunay flips and ours are
   // all that change it. Judged on the angle alone: a patch without a vertex inside cannot bend,
@@ -325,6 +350,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
     return free;
   };
   patch.note("refinement");
+  patch.judgeAgainstTheRefinedFill(hole.stages.back().energy);
   std::string failed;
   try {
     solveBiharmonic(sub, freeVertices());
@@ -339,12 +365,18 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   }
   const bool start = patch.judge("bi-Laplace", 0, failed, false);
   patch.settleWithNext(start);
-  hole.energyBefore = hole.energyAfter = patch.kept().energy;
+  hole.energyBefore = hole.energyAfter = patch.reference();
+  // Ends with the last kept patch; where that is still the triangulation, nothing was gained.
+  auto finish = [&] {
+    patch.restore();
+    hole.energyAfter = patch.kept().energy;
+    if (patch.triangulationKept()) hole.energyBefore = hole.energyAfter;
+  };
   // A start judged worse than the flat fill (a sliver of 0.3° where the fill had 0.4°, on a
   // 200-edge hole in the elephant) is still the shape to go on from: the remeshing and the flow
   // after it are judged against the flat fill, which stays the patch if they do no better.
   if (!failed.empty() || opt.stopAfter == FillStage::Biharmonic) {
-    patch.restore();
+    finish();
     return;
   }
 
@@ -406,8 +438,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
     // second remeshing and flow took 42 s), remeshing makes them anew.
     flowStage("coarse flow", relax);
     if (limitReached()) {
-      patch.restore();
-      hole.energyAfter = patch.kept().energy;
+      finish();
       return;
     }
     coarsenAwayFromBorder(sub, patchFace, sigma, firstNew, kFineScale);
@@ -427,8 +458,7 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   const bool thinInside = !flowKept || smallestAngleAwayFromBorder(sub, patchFace, firstNew) < kRemeshBelowDegrees;
   if (!limitReached() && thinInside && patch.kept().minAngleDegrees < kRemeshBelowDegrees)
     flowStage("remeshing and flow", [&] { remeshPatch(sub, patchFace, sigma, firstNew); });
-  patch.restore();
-  hole.energyAfter = patch.kept().energy;
+  finish();
 }
 
 // Welds `removed` into `kept` (two copies of one point on a hole border) unless an edge would then

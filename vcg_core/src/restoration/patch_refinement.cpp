@@ -2,6 +2,10 @@
 #include "mesh/edge_flips.h"
 #include "restoration/patch_refinement.h"
 
+#include <algorithm>
+#include <map>
+#include <utility>
+
 namespace elastica {
 namespace {
 
@@ -43,6 +47,33 @@ void refinePatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vecto
     if (!split) break;
     flipToDelaunay(mesh, insidePatch, kFlipPasses);
   }
+}
+
+bool sizeBorderByItsOwnEdges(const TriMesh& mesh, const std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma) {
+  std::map<std::pair<int, int>, int> facesOnEdge;  // ordered: the same sums on every run
+  for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+    if (!patchFace[f]) continue;
+    const Face& t = mesh.faces[f];
+    for (int k = 0; k < 3; ++k) ++facesOnEdge[std::minmax(t[k], t[(k + 1) % 3])];
+  }
+  std::map<int, std::pair<double, int>> along;  // border vertex -> (sum of its border edges, count)
+  for (const auto& [edge, count] : facesOnEdge) {
+    if (count != 1) continue;
+    const double length = (mesh.positions[edge.first] - mesh.positions[edge.second]).norm();
+    for (int v : {edge.first, edge.second}) {
+      along[v].first += length;
+      ++along[v].second;
+    }
+  }
+  bool lowered = false;
+  for (const auto& [v, sum] : along) {
+    const double own = sum.first / sum.second;
+    if (own < sigma[v]) {
+      sigma[v] = own;
+      lowered = true;
+    }
+  }
+  return lowered;
 }
 
 }  // namespace elastica
