@@ -412,9 +412,8 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
   // The semi-implicit result comes back if it is the only one, or changed the region and is final
   // where the vector result is not, or neither or both are and it costs less (or the vector run
   // changed nothing). A final result beats a lid whose Loop surface costs less: that surface is
-  // not the mesh that comes back, and the lid would say stalled (lion-head's seeded region 1:
-  // the lid 30.1 Loop-subdivided, the semi-implicit result 37.6, converged, resolved;
-  // docs/benchmarks.md, "Regions: a final result beats a lid").
+  // not the mesh that comes back, and the lid would say stalled (docs/decisions.md, "Regions:
+  // which run comes back").
   const bool takeSemi = semi.ran && semi.report.stop != StopReason::Unchanged &&
                         (!vector.ran || vector.report.stop == StopReason::Unchanged ||
                          (final(semi) != final(vector) ? final(semi)
