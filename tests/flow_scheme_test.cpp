@@ -119,7 +119,9 @@ TEST_P(FlowScheme, FixedBoundaryClampsTwoRows) {
     }
     while (at < m.vertexCount() && !same(m.positions[at], before.positions[v])) ++at;
     ASSERT_LT(at, m.vertexCount()) << "clamped vertex " << v << " is not in the output after the ones before it";
-    if (m.vertexCount() >= before.vertexCount()) EXPECT_EQ(at, v) << "clamped vertex " << v;
+    if (m.vertexCount() >= before.vertexCount()) {
+      EXPECT_EQ(at, v) << "clamped vertex " << v;
+    }
     clampedAfter[at++] = 1;
   }
   ASSERT_EQ(free, 7 * 7);
