@@ -9,12 +9,11 @@ returns False) and leaves the mesh as it was. The time limit ("Time limit (s)", 
 MeshLab) stops a long fair and keeps the state reached, as every face does, and says so (undo
 restores the mesh; raise the limit, or 0 for none); a fill stopped by it keeps the patches it made.
 
-From the redo panel, or Repeat Last (Shift R), both execute, the rerun computes in the worker too
-while the main thread waits: the cursor counts the steps and the status bar, redrawn every half
-second, shows the stage, step, energy and time. Esc cannot stop it: Blender's redo
-(ED_undo_operator_repeat, editors/undo/ed_undo.cc) calls exec only and undoes the rerun unless it
-returns FINISHED (so it cannot go modal), Repeat Last calls exec only too, and Python's exec has no
-call that reads the event queue; the panel's time limit bounds it, and the status bar says so.
+From the redo panel (execute) the rerun computes in the worker too, while the main thread waits: the
+cursor counts the steps and the status bar, redrawn every half second, shows the stage, step, energy and
+time. Esc cannot stop it: Blender's redo (ED_undo_operator_repeat, editors/undo/ed_undo.cc) calls
+exec only and undoes the rerun unless it returns FINISHED (so it cannot go modal), and Python's exec
+has no call that reads the event queue; the panel's time limit bounds it, and the status bar says so.
 Scripts and background Blender (no window) compute in the foreground, without the redraws.
 
 Edit Mode: the operator leaves Edit Mode once at its start and enters it again once at its end (a
@@ -58,9 +57,9 @@ elastica = _import_elastica()
 
 # The worker runs of modal operators still going (what the status bar shows; tests read it).
 running_jobs = []
-# The status lines drawn during the last rerun from the redo panel or Repeat Last (tests read it).
+# The status lines drawn during the last rerun from the redo panel (tests read it).
 redo_status = []
-# How often such a rerun redraws the status bar to show its progress (seconds).
+# How often a redo rerun redraws the window to show its progress (seconds).
 REDO_REDRAW_INTERVAL = 0.5
 
 def _property(p):
@@ -139,8 +138,8 @@ class ElasticaOperator:
         return {p["keyword"]: getattr(self, name) for name, (p, _) in self.params.items() if p["keyword"]}
 
     def execute(self, context):
-        """To the end: a rerun (redo panel, Repeat Last) in a worker with its progress drawn
-        (wait_redrawing), a script or background Blender in the foreground."""
+        """To the end: a redo-panel rerun in a worker with its progress drawn (wait_redrawing), a script
+        or background Blender in the foreground."""
         ob = context.active_object
         edit = context.mode == 'EDIT_MESH'
         wm = context.window_manager
@@ -150,7 +149,7 @@ class ElasticaOperator:
         self._status(context, self.bl_label + "…")
         try:
             compute = self.prepare(ob.data, edit)
-            if (self.options.is_repeat or self.options.is_repeat_last) and context.window is not None:
+            if self.options.is_repeat and context.window is not None:
                 result = self.wait_redrawing(context, compute)
             else:
                 result = compute(self.progress(context))
@@ -246,8 +245,8 @@ class ElasticaOperator:
             context.workspace.status_text_set(text)
 
     def wait_redrawing(self, context, compute):
-        """A redo or Repeat Last rerun: compute in a worker; the main thread shows its progress
-        (Blender draws the status bar only between events, so it is redrawn here); the result."""
+        """A redo rerun: compute in a worker; the main thread shows its progress (Blender draws the
+        status bar only between events, so the window is redrawn here) and returns its result."""
         wm = context.window_manager
         limit = getattr(self, "max_seconds", 0)
         bound = (f"the time limit ({limit:g} s) ends it" if limit else "no time limit (0)")
@@ -260,8 +259,8 @@ class ElasticaOperator:
                 continue
             last = p
             wm.progress_update(min(int(p["step"]), 9999))
-            text = (f"{self.bl_label} (rerun): stage {p['level']}, step {p['step']}, E = {p['energy']:.6g}, "
-                    f"{p['seconds']:.1f} s; Esc cannot stop a rerun, {bound}")
+            text = (f"{self.bl_label} (redo): stage {p['level']}, step {p['step']}, E = {p['energy']:.6g}, "
+                    f"{p['seconds']:.1f} s; Esc cannot stop a redo rerun, {bound}")
             self._status(context, text)
             redo_status.append(text)
             self._redraw_status_bar(context)
