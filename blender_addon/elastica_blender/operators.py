@@ -7,14 +7,8 @@ Run from the menu or F3 (invoke), fairing and filling compute in a worker thread
 responsive: the status bar shows the step and energy, Esc cancels (the module's progress callback
 returns False) and leaves the mesh as it was. The time limit ("Time limit (s)", 60 s by default as in
 MeshLab) stops a long fair and keeps the state reached, as every face does, and says so (undo
-restores the mesh; raise the limit, or 0 for none); a fill stopped by it keeps the patches it made.
-
-From the redo panel (execute) the rerun computes in the worker too, while the main thread waits: the
-cursor counts the steps and the status bar, redrawn every half second, shows the stage, step, energy and
-time. Esc cannot stop it: Blender's redo (ED_undo_operator_repeat, editors/undo/ed_undo.cc) calls
-exec only and undoes the rerun unless it returns FINISHED (so it cannot go modal), and Python's exec
-has no call that reads the event queue; the panel's time limit bounds it, and the status bar says so.
-Scripts and background Blender (no window) compute in the foreground, without the redraws.
+restores the mesh; raise the limit, or 0 for none); a fill stopped by it keeps the patches it made. From the
+redo panel or a script (execute) they run to the end in the foreground.
 
 Edit Mode: the operator leaves Edit Mode once at its start and enters it again once at its end (a
 mode switch syncs the edit mesh; nothing toggles per step). Undo restores the mesh (REGISTER, UNDO).
@@ -57,10 +51,6 @@ elastica = _import_elastica()
 
 # The worker runs of modal operators still going (what the status bar shows; tests read it).
 running_jobs = []
-# The status lines drawn during the last rerun from the redo panel (tests read it).
-redo_status = []
-# How often a redo rerun redraws the window to show its progress (seconds).
-REDO_REDRAW_INTERVAL = 0.5
 
 def _property(p):
     """A bpy property for one parameter of elastica.filters()."""
@@ -138,8 +128,7 @@ class ElasticaOperator:
         return {p["keyword"]: getattr(self, name) for name, (p, _) in self.params.items() if p["keyword"]}
 
     def execute(self, context):
-        """To the end: a redo-panel rerun in a worker with its progress drawn (wait_redrawing), a script
-        or background Blender in the foreground."""
+        """In the foreground, to the end (the redo panel, scripts)."""
         ob = context.active_object
         edit = context.mode == 'EDIT_MESH'
         wm = context.window_manager
@@ -149,11 +138,7 @@ class ElasticaOperator:
         self._status(context, self.bl_label + "…")
         try:
             compute = self.prepare(ob.data, edit)
-            if self.options.is_repeat and context.window is not None:
-                result = self.wait_redrawing(context, compute)
-            else:
-                result = compute(self.progress(context))
-            message = self.apply(context, ob.data, result)
+            message = self.apply(context, ob.data, compute(self.progress(context)))
         except (elastica.Error, ValueError) as e:
             self.report({'ERROR'}, f"{self.bl_label}: {e}")
             return {'CANCELLED'}
@@ -243,42 +228,6 @@ class ElasticaOperator:
     def _status(self, context, text):
         if context.workspace is not None:
             context.workspace.status_text_set(text)
-
-    def wait_redrawing(self, context, compute):
-        """A redo rerun: compute in a worker; the main thread shows its progress (Blender draws the
-        status bar only between events, so the window is redrawn here) and returns its result."""
-        wm = context.window_manager
-        limit = getattr(self, "max_seconds", 0)
-        bound = (f"the time limit ({limit:g} s) ends it" if limit else "no time limit (0)")
-        redo_status.clear()
-        job = Job(compute)
-        last = None
-        while not job.wait(REDO_REDRAW_INTERVAL):
-            p = job.latest
-            if p is None or p is last:
-                continue
-            last = p
-            wm.progress_update(min(int(p["step"]), 9999))
-            text = (f"{self.bl_label} (redo): stage {p['level']}, step {p['step']}, E = {p['energy']:.6g}, "
-                    f"{p['seconds']:.1f} s; Esc cannot stop a redo rerun, {bound}")
-            self._status(context, text)
-            redo_status.append(text)
-            self._redraw_status_bar(context)
-        if job.error is not None:
-            raise job.error
-        return job.result
-
-    @staticmethod
-    def _redraw_status_bar(context):
-        """Draws the regions waiting for it (the status bar, tagged by status_text_set) and swaps, with
-        wm.redraw_timer (the API's one way to redraw from a running script) on a header region, the
-        cheapest to draw: the status bar is a global area that bpy does not list."""
-        screen = context.window.screen
-        area, region = next(((a, r) for a in screen.areas for r in a.regions if r.type == 'HEADER'), (None, None))
-        if region is None:
-            return
-        with context.temp_override(window=context.window, screen=screen, area=area, region=region):
-            bpy.ops.wm.redraw_timer(type='DRAW_SWAP', iterations=1)
 
     def progress(self, context):
         """The module's progress callback: the step number on the cursor, the state on the status bar."""
