@@ -10,7 +10,7 @@
 #
 # float-cast-overflow is named because g++'s -fsanitize=undefined leaves it out (clang's, in the
 # fuzz build, has it: fuzzing found a 1e300 converted to an integer in the PLY reader).
-# The sanitizer build is optimised (-O2 -g, without NDEBUG so Eigen's and vcglib's assertions stay
+# The sanitizer build is optimised (-O2 -g1, without NDEBUG so Eigen's and vcglib's assertions stay
 # on): Debug at -O1 made single flow tests take minutes (Flow.ScaleCovariance 250 s; 13 s here,
 # 1.3 s in Release), and the suite never finished. OpenMP is left out of it: libgomp is not built
 # with the sanitizers, so what happens inside its thread pool is unchecked and can be misreported.
@@ -19,13 +19,15 @@
 # any test mesh has. The MeshLab plugin and the Python module are not in this build: they load into
 # unsanitized hosts (MeshLab's binaries and libmeshlab-common; /usr/bin/python3), which cannot
 # carry the ASan runtime.
+# -g1 (line tables only), for CI's 45 minutes: reports still name the function and file:line of
+# every frame, inlined ones too, and the code is the same as at -g (docs/decisions.md, "CI's time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${1:-60}
 start=$SECONDS
 
 echo "== sanitizers: ASan + UBSan build of the test suite (build-asan/)"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -g" \
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -g1" \
   -DELASTICA_BUILD_PLUGIN=OFF -DELASTICA_BUILD_BENCH=OFF -DELASTICA_BUILD_PYTHON=OFF -DCMAKE_DISABLE_FIND_PACKAGE_OpenMP=ON \
   -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=undefined,float-cast-overflow -fno-omit-frame-pointer" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
@@ -34,8 +36,13 @@ echo "== sanitizers: built ($((SECONDS - start)) s)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0:halt_on_error=1
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 # Not here: tier_includes (compiles probe files, runs none of them) and readme_layout (reads the
-# docs): no instrumented code runs in them, so the sanitizers have nothing to watch.
-ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^(tier_includes|readme_layout)$'
+# docs): no instrumented code runs in them, so the sanitizers have nothing to watch (nor threads:
+# .ci/run's one-thread pass leaves them out too, so no test here is owed a one-thread run).
+# On one thread: this pass is also CI's one-thread run of these tests (.ci/run runs the rest in
+# Release). OMP_THREAD_LIMIT=1 because Debian's CHOLMOD starts four OpenMP threads whatever
+# OMP_NUM_THREADS says; Release keeps it on one (spd_solver.cpp), which needs OpenMP in our code.
+OMP_NUM_THREADS=1 OMP_THREAD_LIMIT=1 \
+  ctest --test-dir build-asan --output-on-failure -j"$(nproc)" -E '^(tier_includes|readme_layout)$'
 echo "== sanitizers: clean ($((SECONDS - start)) s so far)"
 
 echo "== fuzzing: ${fuzz_seconds} s per target"
