@@ -26,22 +26,30 @@ constexpr double kIncompleteTolerance = 1e-12;
 }  // namespace
 
 struct PrincipalPartFilter::Solver {
-  SemiImplicitSystem system;
-  IncompleteCholeskyCg incomplete;
+  Eigen::SparseMatrix<double> matrix;  // the step's, both triangles (the products read all of it)
+  int rows = 0;
+  std::unique_ptr<IncompleteCholeskyCg> incomplete = std::make_unique<IncompleteCholeskyCg>();
   SpdSolver spd;
   bool direct = true;  // solve with spd's factorisation (else with `incomplete`)
 
   // Factorises the matrix for direct solves from now on; false if it is not positive definite.
+  // The factorisation reads the lower triangle only: it gets that alone, and the incomplete
+  // factor and the whole matrix, of no use from here on, go first (CHOLMOD's transposed copy is
+  // of what it gets): the same factor with less beside it at the run's peak.
   bool factorize() {
     direct = true;
-    spd.analyzePattern(system.matrix());
-    return spd.factorize(system.matrix());
+    incomplete.reset();
+    Eigen::SparseMatrix<double> lower = matrix.triangularView<Eigen::Lower>();
+    lower.data().squeeze();  // its exact size (the assignment reserves by doubling)
+    Eigen::SparseMatrix<double>().swap(matrix);
+    spd.analyzePattern(lower);
+    return spd.factorize(lower);
   }
   // The step's displacements for the columns of b; false if they are not finite.
   bool solve(const Eigen::MatrixXd& b, Eigen::MatrixXd& displacement) {
     if (!direct) {
       // A column that misses the tolerance ends the iterations there (the first, if any does).
-      if (incomplete.solve(b, displacement, kIncompleteTolerance, kIncompleteIterations) >= 0) return true;
+      if (incomplete->solve(b, displacement, kIncompleteTolerance, kIncompleteIterations) >= 0) return true;
       if (!factorize()) return false;
     }
     displacement.resize(b.rows(), b.cols());
@@ -71,8 +79,13 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau) {
   vertexArea_ = geo.vertexArea;
   tau_ = tau;
   solver_ = std::make_unique<Solver>();
-  solver_->system.assembleMatrix(topo, edgeWeight_, vertexArea_, roles.active, freeIndex_, rows, 1.0, 0.5 * tau);
-  if (rows >= kIncompleteFromRows && solver_->incomplete.compute(solver_->system.matrix())) {
+  {
+    SemiImplicitSystem system;  // its products' slots go once the matrix is assembled
+    system.assembleMatrix(topo, edgeWeight_, vertexArea_, roles.active, freeIndex_, rows, 1.0, 0.5 * tau);
+    solver_->matrix = system.takeMatrix();
+  }
+  solver_->rows = rows;
+  if (rows >= kIncompleteFromRows && solver_->incomplete->compute(solver_->matrix)) {
     solver_->direct = false;
     return true;
   }
@@ -88,7 +101,7 @@ bool PrincipalPartFilter::step(FlowState& state) {
   // C_fa M_aa⁻¹ C_a· product).
   cotanLaplacian(topo, edgeWeight_, vertexArea_, x, laplacian_);
   cotanLaplacian(topo, edgeWeight_, vertexArea_, laplacian_, bilaplacian_);
-  const int rows = static_cast<int>(solver_->system.matrix().rows());
+  const int rows = solver_->rows;
   Eigen::MatrixXd b(rows, 3);
   for (int v = 0; v < nv; ++v)
     if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = (-0.5 * tau_ * vertexArea_[v]) * bilaplacian_[v].transpose();
