@@ -313,6 +313,151 @@ void settleStop(HoleReport& hole, bool innerVertices) {
                               "angle ") + angle + "°: no flow can bend it";
 }
 
+// The vertices of `sub` free to move: the patch's own, from `firstNew` on.
+std::vector<std::uint8_t> freeVertices(const TriMesh& sub, int firstNew) {
+  std::vector<std::uint8_t> free(sub.positions.size(), 0);
+  std::fill(free.begin() + firstNew, free.end(), 1);
+  return free;
+}
+
+// A small hole: the triangulation is its patch, and the refinement's Delaunay flips and ours are
+// all that change it. Judged on the angle alone: a patch without a vertex inside cannot bend,
+// its flips trade one crease for another, and the minimum-weight triangulation is the one with
+// the smallest creases (on CGAL's elephant every flip raised the energy, and keeping them out
+// left 6-edge holes at 5°).
+void restoreFan(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+                MonotonePatch& patch) {
+  patch.judge("refinement", 0, "", false);
+  if (improvePatchAngles(sub, patchFace, sigma, firstNew) > 0) patch.judge("flips", 0, "", false);
+  patch.restore();
+}
+
+// Embeds the refined patch by the bi-Laplace solve; the error's text if the solve failed.
+std::string embedPatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+                       const PatchRefinementOptions& refinement) {
+  try {
+    solveBiharmonic(sub, freeVertices(sub, firstNew));
+    // The embedded patch is larger than the flat fill where the hole is deep: refine where it
+    // stretched, and solve again.
+    const int before = sub.vertexCount();
+    refinePatch(sub, patchFace, sigma, refinement);
+    if (sub.vertexCount() > before) solveBiharmonic(sub, freeVertices(sub, firstNew));
+  } catch (const NumericalError& e) {
+    return std::string(e.what()) + "; kept the flat patch";
+  }
+  return "";
+}
+
+// The flow stages of one patch. Budgets (steps, seconds) are shared by all stages of all holes.
+class PatchFlow {
+ public:
+  PatchFlow(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+            const FlowOptions& flowBudget, MonotonePatch& patch, HoleReport& hole)
+      : sub_(sub), patchFace_(patchFace), sigma_(sigma), firstNew_(firstNew), flow_(flowBudget), patch_(patch), hole_(hole) {
+    flow_.boundary = BoundaryMode::Fixed;
+  }
+
+  // One flow stage: what `prepare` does to the patch, then its angles raised where the border
+  // ring is poor, then the flow, judged (against `energyFrom` if given). True if kept.
+  template <class Prepare>
+  bool stage(const char* name, Prepare prepare, std::optional<double> energyFrom = std::nullopt) {
+    const auto began = std::chrono::steady_clock::now();
+    prepare();
+    // Only a patch below the target: moving the vertices of one that reaches it already (toward a
+    // 35° margin, within their tangent planes) changes the surface the flow starts from, and the
+    // flow, which moves vertices along their normals, ends elsewhere (the armadillo's 20-edge hole:
+    // 0.052 % from the removed surface with the pass, 0.048 % without, CGAL's 0.047 %; same 27.1°).
+    // What the flow lowers below the target, the pass after it raises.
+    if (smallestAngleDegrees(sub_, patchFace_) < kTargetAngleDegrees) improvePatchAngles(sub_, patchFace_, sigma_, firstNew_);
+    std::string why;
+    long long steps = 0;
+    flowOnce(steps, why);
+    hole_.steps += steps;
+    flow_.maxSteps = std::max<long long>(flow_.maxSteps - steps, 0);
+    if (flow_.maxSeconds > 0) flow_.maxSeconds = std::max(flow_.maxSeconds - seconds(began), 1e-9);  // 0 would mean none
+    const bool kept = patch_.judge(name, steps, why, true, energyFrom);
+    if (!why.empty()) hole_.reason = why + "; kept the patch of the last stage kept";
+    return kept;
+  }
+
+  // Tangential relaxation of the patch's vertices (a stage's `prepare`).
+  void relax() { relaxTangentially(sub_, freeVertices(sub_, firstNew_)); }
+
+ private:
+  // The flow, then the angles below the target raised: its `steps`, and in `why` what stopped it
+  // if it failed.
+  void flowOnce(long long& steps, std::string& why) {
+    try {
+      const FlowReport r = fairMasked(sub_, &patchFace_, flow_, kPatchFlow);
+      steps = r.steps;
+      hole_.stop = r.stop;
+      // After the flow only what is below the target: moving vertices that are fine already
+      // undoes the flow's work (a small hole on CGAL's elephant went from E 20.2 to 23.8).
+      if (smallestAngleDegrees(sub_, patchFace_) < kTargetAngleDegrees)
+        improvePatchAngles(sub_, patchFace_, sigma_, firstNew_, kTargetAngleDegrees, 8, true);
+    } catch (const FlowDivergedError& e) {
+      steps = e.report().steps;
+      hole_.stop = StopReason::Diverged;
+      why = e.what();
+    } catch (const Error& e) {  // e.g. a sliver that makes the explicit step vanish
+      why = e.what();
+    }
+  }
+
+  TriMesh& sub_;
+  std::vector<std::uint8_t>& patchFace_;
+  std::vector<double>& sigma_;
+  int firstNew_;
+  FlowOptions flow_;
+  MonotonePatch& patch_;
+  HoleReport& hole_;
+};
+
+// The flow stages after the bi-Laplace start, each judged; the patch ends as the last stage left
+// it (restorePatch then takes the last kept). `lengthScale`: the coarse start's edge lengths.
+void flowPatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
+               const FlowOptions& flowBudget, bool coarseFirst, double lengthScale, MonotonePatch& patch, HoleReport& hole) {
+  PatchFlow flow(sub, patchFace, sigma, firstNew, flowBudget, patch, hole);
+  // The bi-Laplace patch is stretched unevenly where the hole is deep (smallest angle 5° on a
+  // 110° cap): remesh it toward the border's edge lengths before the flow moves it, where it has
+  // slivers. Judged like any stage; the flow goes on from it either way (from the slivers, the
+  // flow folded the patch of a 110° cap through itself).
+  if (patch.kept().minAngleDegrees < kRemeshStartBelowDegrees) {
+    remeshPatch(sub, patchFace, sigma, firstNew, remeshingBeforeAFlow(lengthScale));
+    patch.judge("remeshing", 0);
+  }
+  auto relax = [&] { flow.relax(); };
+  // A step or time limit (or the caller's cancel) ended the last flow: no further stage.
+  auto limitReached = [&] { return stoppedAtALimit(hole.stop); };
+  std::optional<double> fineStart;
+  if (coarseFirst) {
+    // The coarse patch's flow, judged like any stage; the fine one goes on from what it left,
+    // remeshed to the border's density (judged with the flow after it, as the first refinement
+    // is: its new vertices lie on the coarse patch's flat faces, which the flow rounds off).
+    // Remeshed rather than refined at centroids: refinement leaves the coarse border ring's faces
+    // as they are (the armadillo's 1,978-edge hole kept a 17.4° face on a border edge, and a
+    // second remeshing and flow took 42 s), remeshing makes them anew.
+    flow.stage("coarse flow", relax);
+    if (limitReached()) return;
+    coarsenAwayFromBorder(sub, patchFace, sigma, firstNew, kFineScale);
+    remeshPatch(sub, patchFace, sigma, firstNew, remeshingBeforeAFlow(1.0));
+    patch.note("remeshing to the border's density");
+    fineStart = hole.stages.back().energy;
+  }
+  // After a coarse flow, the fine flow is judged against its own start (the energy of the remeshed
+  // patch) and, failing, leaves the coarse patch.
+  const bool flowKept = flow.stage("flow", relax, fineStart);
+  if (coarseFirst) patch.settleWithNext(flowKept);
+  // The flow inflates a deep patch (a 120° cap's bi-Laplace patch has 40 % of the restored cap's
+  // area) and so stretches the triangles it started from: remesh at the final size, and flow
+  // again from there (a short run: the shape is already there). Not where the only thin faces
+  // are on border edges: remeshing keeps the border and leaves them as they are (a 794-edge hole
+  // in the armadillo spent 5 s, half its fill, to go from 17.4° to 17.5°).
+  const bool thinInside = !flowKept || smallestAngleAwayFromBorder(sub, patchFace, firstNew) < kRemeshBelowDegrees;
+  if (!limitReached() && thinInside && patch.kept().minAngleDegrees < kRemeshBelowDegrees)
+    flow.stage("remeshing and flow", [&] { remeshPatch(sub, patchFace, sigma, firstNew); });
+}
+
 // Refines, embeds and fairs the patch (the faces flagged in `patchFace`) of `sub`, a piece of the
 // mesh around one hole. The vertices from `firstNew` on are the patch's own; nothing else moves.
 void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma, int firstNew,
@@ -325,140 +470,28 @@ void restorePatch(TriMesh& sub, std::vector<std::uint8_t>& patchFace, std::vecto
   const double lengthScale = coarseFirst ? kCoarseScale : 1.0;
   PatchRefinementOptions refinement = opt.refinement;
   refinement.density /= lengthScale;
-  refinePatch(sub, patchFace, sigma, refinement);
-  // No vertex inside, needles, and a border that allows better: refined again to the border's own
-  // edge lengths (CGAL's bull: a 21-edge hole stayed a fan at 10.9 deg where the border allows 22.5).
-  if (sub.vertexCount() == firstNew &&
-      smallestAngleDegrees(sub, patchFace) < std::min(kTargetAngleDegrees, hole.borderBoundDegrees) &&
-      sizeBorderByItsOwnEdges(sub, patchFace, sigma))
-    refinePatch(sub, patchFace, sigma, refinement);
+  refinePatchOrItsFan(sub, patchFace, sigma, refinement, std::min(kTargetAngleDegrees, hole.borderBoundDegrees));
   if (opt.stopAfter == FillStage::Refinement) return;
-  // A small hole: the triangulation is its patch, and the refinement's Delaunay flips and ours are
-  // all that change it. Judged on the angle alone: a patch without a vertex inside cannot bend,
-  // its flips trade one crease for another, and the minimum-weight triangulation is the one with
-  // the smallest creases (on CGAL's elephant every flip raised the energy, and keeping them out
-  // left 6-edge holes at 5°).
   if (sub.vertexCount() == firstNew) {
-    patch.judge("refinement", 0, "", false);
-    if (improvePatchAngles(sub, patchFace, sigma, firstNew) > 0) patch.judge("flips", 0, "", false);
-    patch.restore();
+    restoreFan(sub, patchFace, sigma, firstNew, patch);
     return;
   }
-  auto freeVertices = [&] {
-    std::vector<std::uint8_t> free(sub.positions.size(), 0);
-    std::fill(free.begin() + firstNew, free.end(), 1);
-    return free;
-  };
   patch.note("refinement");
   patch.judgeAgainstTheRefinedFill(hole.stages.back().energy);
-  std::string failed;
-  try {
-    solveBiharmonic(sub, freeVertices());
-    // The embedded patch is larger than the flat fill where the hole is deep: refine where it
-    // stretched, and solve again.
-    const int before = sub.vertexCount();
-    refinePatch(sub, patchFace, sigma, refinement);
-    if (sub.vertexCount() > before) solveBiharmonic(sub, freeVertices());
-  } catch (const NumericalError& e) {
-    failed = std::string(e.what()) + "; kept the flat patch";
-    hole.reason = failed;
-  }
+  const std::string failed = embedPatch(sub, patchFace, sigma, firstNew, refinement);
+  if (!failed.empty()) hole.reason = failed;
   const bool start = patch.judge("bi-Laplace", 0, failed, false);
   patch.settleWithNext(start);
   hole.energyBefore = hole.energyAfter = patch.reference();
-  // Ends with the last kept patch; where that is still the triangulation, nothing was gained.
-  auto finish = [&] {
-    patch.restore();
-    hole.energyAfter = patch.kept().energy;
-    if (patch.triangulationKept()) hole.energyBefore = hole.energyAfter;
-  };
   // A start judged worse than the flat fill (a sliver of 0.3° where the fill had 0.4°, on a
   // 200-edge hole in the elephant) is still the shape to go on from: the remeshing and the flow
   // after it are judged against the flat fill, which stays the patch if they do no better.
-  if (!failed.empty() || opt.stopAfter == FillStage::Biharmonic) {
-    finish();
-    return;
-  }
-
-  FlowOptions flow = flowBudget;
-  flow.boundary = BoundaryMode::Fixed;
-  // One flow stage: what `prepare` does to the patch, then its angles raised where the border
-  // ring is poor, then the flow. Budgets (steps, seconds) are shared by all stages of all holes.
-  auto flowStage = [&](const char* name, auto prepare, std::optional<double> energyFrom = std::nullopt) {
-    const auto began = std::chrono::steady_clock::now();
-    prepare();
-    // Only a patch below the target: moving the vertices of one that reaches it already (toward a
-    // 35° margin, within their tangent planes) changes the surface the flow starts from, and the
-    // flow, which moves vertices along their normals, ends elsewhere (the armadillo's 20-edge hole:
-    // 0.052 % from the removed surface with the pass, 0.048 % without, CGAL's 0.047 %; same 27.1°).
-    // What the flow lowers below the target, the pass after it raises.
-    if (smallestAngleDegrees(sub, patchFace) < kTargetAngleDegrees) improvePatchAngles(sub, patchFace, sigma, firstNew);
-    std::string why;
-    long long steps = 0;
-    try {
-      const FlowReport r = fairMasked(sub, &patchFace, flow, kPatchFlow);
-      steps = r.steps;
-      hole.stop = r.stop;
-      // After the flow only what is below the target: moving vertices that are fine already
-      // undoes the flow's work (a small hole on CGAL's elephant went from E 20.2 to 23.8).
-      if (smallestAngleDegrees(sub, patchFace) < kTargetAngleDegrees)
-        improvePatchAngles(sub, patchFace, sigma, firstNew, kTargetAngleDegrees, 8, true);
-    } catch (const FlowDivergedError& e) {
-      steps = e.report().steps;
-      hole.stop = StopReason::Diverged;
-      why = e.what();
-    } catch (const Error& e) {  // e.g. a sliver that makes the explicit step vanish
-      why = e.what();
-    }
-    hole.steps += steps;
-    flow.maxSteps = std::max<long long>(flow.maxSteps - steps, 0);
-    if (flow.maxSeconds > 0) flow.maxSeconds = std::max(flow.maxSeconds - seconds(began), 1e-9);  // 0 would mean none
-    const bool kept = patch.judge(name, steps, why, true, energyFrom);
-    if (!why.empty()) hole.reason = why + "; kept the patch of the last stage kept";
-    return kept;
-  };
-  // The bi-Laplace patch is stretched unevenly where the hole is deep (smallest angle 5° on a
-  // 110° cap): remesh it toward the border's edge lengths before the flow moves it, where it has
-  // slivers. Judged like any stage; the flow goes on from it either way (from the slivers, the
-  // flow folded the patch of a 110° cap through itself).
-  if (patch.kept().minAngleDegrees < kRemeshStartBelowDegrees) {
-    remeshPatch(sub, patchFace, sigma, firstNew, remeshingBeforeAFlow(lengthScale));
-    patch.judge("remeshing", 0);
-  }
-  auto relax = [&] { relaxTangentially(sub, freeVertices()); };
-  // A step or time limit (or the caller's cancel) ended the last flow: no further stage.
-  auto limitReached = [&] { return stoppedAtALimit(hole.stop); };
-  std::optional<double> fineStart;
-  if (coarseFirst) {
-    // The coarse patch's flow, judged like any stage; the fine one goes on from what it left,
-    // remeshed to the border's density (judged with the flow after it, as the first refinement
-    // is: its new vertices lie on the coarse patch's flat faces, which the flow rounds off).
-    // Remeshed rather than refined at centroids: refinement leaves the coarse border ring's faces
-    // as they are (the armadillo's 1,978-edge hole kept a 17.4° face on a border edge, and a
-    // second remeshing and flow took 42 s), remeshing makes them anew.
-    flowStage("coarse flow", relax);
-    if (limitReached()) {
-      finish();
-      return;
-    }
-    coarsenAwayFromBorder(sub, patchFace, sigma, firstNew, kFineScale);
-    remeshPatch(sub, patchFace, sigma, firstNew, remeshingBeforeAFlow(1.0));
-    patch.note("remeshing to the border's density");
-    fineStart = hole.stages.back().energy;
-  }
-  // After a coarse flow, the fine flow is judged against its own start (the energy of the remeshed
-  // patch) and, failing, leaves the coarse patch.
-  const bool flowKept = flowStage("flow", relax, fineStart);
-  if (coarseFirst) patch.settleWithNext(flowKept);
-  // The flow inflates a deep patch (a 120° cap's bi-Laplace patch has 40 % of the restored cap's
-  // area) and so stretches the triangles it started from: remesh at the final size, and flow
-  // again from there (a short run: the shape is already there). Not where the only thin faces
-  // are on border edges: remeshing keeps the border and leaves them as they are (a 794-edge hole
-  // in the armadillo spent 5 s, half its fill, to go from 17.4° to 17.5°).
-  const bool thinInside = !flowKept || smallestAngleAwayFromBorder(sub, patchFace, firstNew) < kRemeshBelowDegrees;
-  if (!limitReached() && thinInside && patch.kept().minAngleDegrees < kRemeshBelowDegrees)
-    flowStage("remeshing and flow", [&] { remeshPatch(sub, patchFace, sigma, firstNew); });
-  finish();
+  if (failed.empty() && opt.stopAfter != FillStage::Biharmonic)
+    flowPatch(sub, patchFace, sigma, firstNew, flowBudget, coarseFirst, lengthScale, patch, hole);
+  // Ends with the last kept patch; where that is still the triangulation, nothing was gained.
+  patch.restore();
+  hole.energyAfter = patch.kept().energy;
+  if (patch.triangulationKept()) hole.energyBefore = hole.energyAfter;
 }
 
 // Welds `removed` into `kept` (two copies of one point on a hole border) unless an edge would then
@@ -574,33 +607,27 @@ void validate(const HoleFillOptions& opt) {
     throw InvalidInputError("fill: subdivision is not available when filling holes (it would split the original faces)");
 }
 
-// The fill proper, after the checks: welds rewire `output`'s faces in place (each face's value
-// before its first change goes to `weldedFaces`), patches are made aside and appended to `output`
-// at the end, once `index` (the faces around each vertex) is no longer needed.
-void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaces> index, std::vector<HoleHalfEdge> halfEdges,
-                 const HoleFillOptions& opt, std::chrono::steady_clock::time_point start, HoleFillReport& report,
-                 std::unordered_map<int, Face>& weldedFaces) {
-  VertexFaces& adjacency = *index;
-  AppendedMesh mesh(output);
-  // What the patches need of the mesh as it was given, at each border vertex: the mean length of
-  // its edges (the density to match) and the angle its faces span (the border's corner bound).
-  struct BorderVertex {
-    double edgeLength, meshAngle;
-  };
-  std::unordered_map<int, BorderVertex> border;
+// What the patches need of the mesh as it was given, at each border vertex: the mean length of
+// its edges (the density to match) and the angle its faces span (the border's corner bound).
+struct BorderVertex {
+  double edgeLength, meshAngle;
+};
+using BorderVertices = std::unordered_map<int, BorderVertex>;
+
+BorderVertices borderVerticesOf(const TriMesh& mesh, const VertexFaces& adjacency, const std::vector<HoleHalfEdge>& halfEdges) {
+  BorderVertices border;
   for (const HoleHalfEdge& h : halfEdges)
     for (int v : {h.from, h.to})
       if (border.find(v) == border.end())
-        border.emplace(v, BorderVertex{borderEdgeLength(output, adjacency.faces(v), v), cornerAngleSum(output, adjacency.faces(v), v)});
-  auto edgeExists = [&](int a, int b) {
-    for (int f : adjacency.faces(a)) {
-      const Face& t = mesh.face(f);
-      if (t[0] == b || t[1] == b || t[2] == b) return true;
-    }
-    return false;
-  };
+        border.emplace(v, BorderVertex{borderEdgeLength(mesh, adjacency.faces(v), v), cornerAngleSum(mesh, adjacency.faces(v), v)});
+  return border;
+}
 
-  std::vector<WeldRecord> welds;
+// The hole loops, split where a border touches itself and its copies of the point were welded
+// (`welds`, each rewired face's value before its first change into `weldedFaces`).
+std::vector<HoleLoop> weldPinches(const TriMesh& output, AppendedMesh& mesh, VertexFaces& adjacency,
+                                  std::vector<HoleHalfEdge> halfEdges, std::vector<WeldRecord>& welds,
+                                  std::unordered_map<int, Face>& weldedFaces) {
   std::vector<HoleLoop> loops;
   for (const HoleLoop& found : findHoleLoops(std::move(halfEdges))) {
     PinchSplit split = splitAtPinches(found, output.positions, [&](int kept, int removed) {
@@ -614,9 +641,14 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaces> index, std::vecto
     });
     for (HoleLoop& loop : split.loops) loops.push_back(std::move(loop));
   }
-  // An island (a fragment inside a hole, bounded by its own loop) leaves both loops open: a disc
-  // across the hole would cross the island, and one across the island's loop would close the
-  // island onto itself. The report says so; the user removes the fragment (or keeps the hole).
+  return loops;
+}
+
+// An island (a fragment inside a hole, bounded by its own loop) leaves both loops open: a disc
+// across the hole would cross the island, and one across the island's loop would close the
+// island onto itself. The report says so; the user removes the fragment (or keeps the hole).
+// Returns, for each loop, why it stays open for an island (empty: no island).
+std::vector<std::string> islandReasons(const TriMesh& output, const VertexFaces& adjacency, const std::vector<HoleLoop>& loops) {
   std::vector<std::string> islandReason(loops.size());
   const std::vector<int> islandOf = islandsInHoles(output, adjacency, loops);
   for (std::size_t i = 0; i < loops.size(); ++i) {
@@ -628,96 +660,77 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaces> index, std::vecto
       islandReason[islandOf[i]] = "an island of faces (a separate piece with a border of " + std::to_string(loops[i].edgeCount()) +
                                   " edges) lies inside it, which a patch would cross: left open";
   }
-  const std::vector<RimMeasure> rims = classifyRims(output, loops, [&](int v) { return border.at(v).meshAngle; });
-  long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
-  for (const HoleLoop& loop : loops) {
-    const std::size_t l = static_cast<std::size_t>(&loop - loops.data());
-    const auto holeStart = std::chrono::steady_clock::now();
-    HoleReport hole;
-    hole.borderEdges = loop.edgeCount();
-    hole.borderBoundDegrees = borderCornerBoundDegrees(output.positions, loop, [&](int v) { return border.at(v).meshAngle; });
-    auto skip = [&](std::string why) {
-      hole.reason = std::move(why);
-      hole.seconds = seconds(holeStart);
-      report.holes.push_back(hole);
-    };
-    if (loop.edgeCount() > opt.maxHoleEdges) {
-      skip("larger than the limit of " + std::to_string(opt.maxHoleEdges) + " border edges");
-      continue;
-    }
-    if (loop.pinched) {
-      skip("its border touches itself at a vertex");
-      continue;
-    }
-    if (!islandReason[l].empty()) {
-      skip(islandReason[l]);
-      continue;
-    }
-    hole.rim = rims[l].rim;
-    if (hole.rim && !opt.closeRims) {
-      char why[200];
-      std::snprintf(why, sizeof why,
-                    "the outer rim of an open surface (it turns by %+.0f deg like an outline and spans %.0f %% of its "
-                    "piece's area): left open; close rims to fill it",
-                    rims[l].turning * 180 / M_PI, 100 * rims[l].areaRatio);
-      skip(why);
-      continue;
-    }
-    const auto triangles = triangulateHole(output.positions, loop, edgeExists);
-    if (!triangles) {
-      skip("no triangulation avoids the mesh's existing edges");
-      continue;
-    }
-    const int firstVertex = mesh.vertexCount(), firstFace = mesh.faceCount();
-    for (const Face& t : *triangles) {
-      mesh.faces.push_back(t);
-      adjacency.addFace(mesh.faceCount() - 1, t);
-    }
-    hole.filled = true;
-    if (opt.stopAfter != FillStage::Triangulation) {
-      // Work on the piece of the mesh around the hole, then write the patch back.
-      Submesh sub = extractSubmesh(mesh, adjacency, loop.vertices, kFlowRings);
-      const int subVertices = sub.mesh.vertexCount(), subFaces = sub.mesh.faceCount();
-      std::vector<std::uint8_t> patchFace(subFaces, 0);
-      for (int f = 0; f < subFaces; ++f) patchFace[f] = sub.face[f] >= firstFace;
-      std::vector<double> sigma(subVertices, 0);
-      const std::unordered_set<int> onLoop(loop.vertices.begin(), loop.vertices.end());
-      for (int i = 0; i < subVertices; ++i)
-        if (onLoop.count(sub.vertex[i])) sigma[i] = border.at(sub.vertex[i]).edgeLength;
-      const SerialRegions serial;
-      restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)),
-                   hole);
-      settleStop(hole, sub.mesh.vertexCount() > subVertices);
-      flowSteps += hole.steps;
+  return islandReason;
+}
 
-      auto global = [&](int i) { return i < subVertices ? sub.vertex[i] : firstVertex + i - subVertices; };
-      for (int i = subVertices; i < sub.mesh.vertexCount(); ++i) mesh.positions.push_back(sub.mesh.positions[i]);
-      for (int f = 0; f < sub.mesh.faceCount(); ++f) {
-        if (!patchFace[f]) continue;
-        const Face& t = sub.mesh.faces[f];
-        const Face g{global(t[0]), global(t[1]), global(t[2])};
-        if (f < subFaces) mesh.face(sub.face[f]) = g;
-        else mesh.faces.push_back(g);
-      }
-      // The patch was rewired: renew the face lists of its border.
-      for (int v : loop.vertices) {
-        auto& corners = adjacency.edit(v);
-        corners.erase(std::remove_if(corners.begin(), corners.end(), [&](int c) { return c / 3 >= firstFace; }), corners.end());
-      }
-      for (int f = firstFace; f < mesh.faceCount(); ++f) adjacency.addFace(f, mesh.face(f));
-    }
-    hole.newVertices = mesh.vertexCount() - firstVertex;
-    hole.newFaces = mesh.faceCount() - firstFace;
-    hole.minAngleDegrees = smallestAngleSince(mesh, firstFace);
-    hole.seconds = seconds(holeStart);
-    report.holes.push_back(hole);
-    if (hole.stop == StopReason::Cancelled) break;  // the caller's progress callback said stop
+// Why `loop` is left open before any triangulation is tried (empty: it is filled); sets `hole.rim`
+// once the loop gets as far as the rim rule.
+std::string whyLeftOpen(const HoleLoop& loop, const HoleFillOptions& opt, const std::string& islandReason,
+                        const RimMeasure& rim, HoleReport& hole) {
+  if (loop.edgeCount() > opt.maxHoleEdges)
+    return "larger than the limit of " + std::to_string(opt.maxHoleEdges) + " border edges";
+  if (loop.pinched) return "its border touches itself at a vertex";
+  if (!islandReason.empty()) return islandReason;
+  hole.rim = rim.rim;
+  if (!hole.rim || opt.closeRims) return "";
+  char why[200];
+  std::snprintf(why, sizeof why,
+                "the outer rim of an open surface (it turns by %+.0f deg like an outline and spans %.0f %% of its "
+                "piece's area): left open; close rims to fill it",
+                rim.turning * 180 / M_PI, 100 * rim.areaRatio);
+  return why;
+}
+
+// Writes the restored patch of `sub` (its faces flagged in `patchFace`; vertices from
+// `subVertices` on and faces from `subFaces` on are new) back into `mesh`, whose patch began at
+// `firstVertex` and `firstFace`, and renews the face lists of the loop's vertices.
+void writePatchBack(AppendedMesh& mesh, VertexFaces& adjacency, const Submesh& sub, const std::vector<std::uint8_t>& patchFace,
+                    int subVertices, int subFaces, const HoleLoop& loop, int firstVertex, int firstFace) {
+  auto global = [&](int i) { return i < subVertices ? sub.vertex[i] : firstVertex + i - subVertices; };
+  for (int i = subVertices; i < sub.mesh.vertexCount(); ++i) mesh.positions.push_back(sub.mesh.positions[i]);
+  for (int f = 0; f < sub.mesh.faceCount(); ++f) {
+    if (!patchFace[f]) continue;
+    const Face& t = sub.mesh.faces[f];
+    const Face g{global(t[0]), global(t[1]), global(t[2])};
+    if (f < subFaces) mesh.face(sub.face[f]) = g;
+    else mesh.faces.push_back(g);
   }
+  // The patch was rewired: renew the face lists of its border.
+  for (int v : loop.vertices) {
+    auto& corners = adjacency.edit(v);
+    corners.erase(std::remove_if(corners.begin(), corners.end(), [&](int c) { return c / 3 >= firstFace; }), corners.end());
+  }
+  for (int f = firstFace; f < mesh.faceCount(); ++f) adjacency.addFace(f, mesh.face(f));
+}
 
-  // The faces at each kept copy, for settling the welds; then the index goes before the mesh
-  // grows (so that it and the grown arrays are never held at once).
+// Restores the triangulation just appended to `mesh` (from `firstVertex` and `firstFace` on) on the
+// piece of the mesh around its hole, then writes the patch back. `flowSteps`: what the holes before
+// used of the flow's budget, since `start`.
+void restoreAroundHole(AppendedMesh& mesh, VertexFaces& adjacency, const HoleLoop& loop, const BorderVertices& border,
+                       int firstVertex, int firstFace, const HoleFillOptions& opt, long long flowSteps,
+                       std::chrono::steady_clock::time_point start, HoleReport& hole) {
+  Submesh sub = extractSubmesh(mesh, adjacency, loop.vertices, kFlowRings);
+  const int subVertices = sub.mesh.vertexCount(), subFaces = sub.mesh.faceCount();
+  std::vector<std::uint8_t> patchFace(subFaces, 0);
+  for (int f = 0; f < subFaces; ++f) patchFace[f] = sub.face[f] >= firstFace;
+  std::vector<double> sigma(subVertices, 0);
+  const std::unordered_set<int> onLoop(loop.vertices.begin(), loop.vertices.end());
+  for (int i = 0; i < subVertices; ++i)
+    if (onLoop.count(sub.vertex[i])) sigma[i] = border.at(sub.vertex[i]).edgeLength;
+  const SerialRegions serial;
+  restorePatch(sub.mesh, patchFace, sigma, subVertices, opt, remainingFlowBudget(opt.flow, flowSteps, seconds(start)), hole);
+  settleStop(hole, sub.mesh.vertexCount() > subVertices);
+  writePatchBack(mesh, adjacency, sub, patchFace, subVertices, subFaces, loop, firstVertex, firstFace);
+}
+
+// After the holes: appends the patches kept aside in `mesh` to `output` and settles the welds.
+// `index` (the faces around each vertex) and `border` go before the mesh grows, so that they and
+// the grown arrays are never held at once.
+void appendPatches(TriMesh& output, AppendedMesh& mesh, std::unique_ptr<VertexFaces> index, BorderVertices& border,
+                   const std::vector<WeldRecord>& welds, HoleFillReport& report) {
+  // The faces at each kept copy, for settling the welds.
   std::map<int, std::vector<int>> keptFaces;
-  for (const WeldRecord& w : welds) keptFaces.emplace(w.weld.kept, adjacency.faces(w.weld.kept).copy());
+  for (const WeldRecord& w : welds) keptFaces.emplace(w.weld.kept, index->faces(w.weld.kept).copy());
   index.reset();
   border.clear();
   // One array at a time, each grown once to its exact size.
@@ -731,6 +744,64 @@ void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaces> index, std::vecto
   std::vector<WeldRecord> byKept = welds;
   std::stable_sort(byKept.begin(), byKept.end(), [](const WeldRecord& a, const WeldRecord& b) { return a.weld.kept < b.weld.kept; });
   report.welds = settleWelds(output, keptFaces, byKept);
+}
+
+// The fill proper, after the checks: welds rewire `output`'s faces in place (each face's value
+// before its first change goes to `weldedFaces`), patches are made aside and appended to `output`
+// at the end, once `index` (the faces around each vertex) is no longer needed.
+void fillInPlace(TriMesh& output, std::unique_ptr<VertexFaces> index, std::vector<HoleHalfEdge> halfEdges,
+                 const HoleFillOptions& opt, std::chrono::steady_clock::time_point start, HoleFillReport& report,
+                 std::unordered_map<int, Face>& weldedFaces) {
+  VertexFaces& adjacency = *index;
+  AppendedMesh mesh(output);
+  BorderVertices border = borderVerticesOf(output, adjacency, halfEdges);
+  auto meshAngle = [&](int v) { return border.at(v).meshAngle; };
+  auto edgeExists = [&](int a, int b) {
+    for (int f : adjacency.faces(a)) {
+      const Face& t = mesh.face(f);
+      if (t[0] == b || t[1] == b || t[2] == b) return true;
+    }
+    return false;
+  };
+  std::vector<WeldRecord> welds;
+  const std::vector<HoleLoop> loops = weldPinches(output, mesh, adjacency, std::move(halfEdges), welds, weldedFaces);
+  const std::vector<std::string> islandReason = islandReasons(output, adjacency, loops);
+  const std::vector<RimMeasure> rims = classifyRims(output, loops, meshAngle);
+  long long flowSteps = 0;  // over all holes, against opt.flow.maxSteps
+  for (std::size_t l = 0; l < loops.size(); ++l) {
+    const HoleLoop& loop = loops[l];
+    const auto holeStart = std::chrono::steady_clock::now();
+    HoleReport hole;
+    hole.borderEdges = loop.edgeCount();
+    hole.borderBoundDegrees = borderCornerBoundDegrees(output.positions, loop, meshAngle);
+    std::string why = whyLeftOpen(loop, opt, islandReason[l], rims[l], hole);
+    std::optional<std::vector<Face>> triangles;
+    if (why.empty() && !(triangles = triangulateHole(output.positions, loop, edgeExists)))
+      why = "no triangulation avoids the mesh's existing edges";
+    if (!why.empty()) {
+      hole.reason = std::move(why);
+      hole.seconds = seconds(holeStart);
+      report.holes.push_back(hole);
+      continue;
+    }
+    const int firstVertex = mesh.vertexCount(), firstFace = mesh.faceCount();
+    for (const Face& t : *triangles) {
+      mesh.faces.push_back(t);
+      adjacency.addFace(mesh.faceCount() - 1, t);
+    }
+    hole.filled = true;
+    if (opt.stopAfter != FillStage::Triangulation) {  // on the piece of the mesh around the hole
+      restoreAroundHole(mesh, adjacency, loop, border, firstVertex, firstFace, opt, flowSteps, start, hole);
+      flowSteps += hole.steps;
+    }
+    hole.newVertices = mesh.vertexCount() - firstVertex;
+    hole.newFaces = mesh.faceCount() - firstFace;
+    hole.minAngleDegrees = smallestAngleSince(mesh, firstFace);
+    hole.seconds = seconds(holeStart);
+    report.holes.push_back(hole);
+    if (hole.stop == StopReason::Cancelled) break;  // the caller's progress callback said stop
+  }
+  appendPatches(output, mesh, std::move(index), border, welds, report);
 }
 
 }  // namespace

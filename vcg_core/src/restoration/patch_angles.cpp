@@ -68,24 +68,18 @@ class PatchAngles {
   // over the mesh whatever its angles (the bunny refined twice, a 792-edge hole: two border edges
   // of the ear lay flat on the mesh's faces, reversed); its new vertex is placed back across them.
   int splitEars() {
-    int splits = 0;
-    const int faceCount = static_cast<int>(m_.faces.size());
-    for (int f = 0; f < faceCount; ++f) {
-      if (!patch_[f]) continue;
-      const Face t = m_.faces[f];
-      if (t[0] >= firstNew_ || t[1] >= firstNew_ || t[2] >= firstNew_) continue;
-      const Vec3 &p0 = m_.positions[t[0]], &p1 = m_.positions[t[1]], &p2 = m_.positions[t[2]];
-      if (smallestAngle(p0, p1, p2) >= kEarDegrees && !turnedOverMesh(f)) continue;
+    return splitEachPatchFace([&](int f, const Face& t) {
+      if (t[0] >= firstNew_ || t[1] >= firstNew_ || t[2] >= firstNew_) return false;
+      if (faceAngle(t) >= kEarDegrees && !turnedOverMesh(f)) return false;
       for (int k = 0; k < 3; ++k) {
         const int a = t[k], b = t[(k + 1) % 3];
         const int g = across(f, a, b);
         if (g < 0 || !patch_[g]) continue;  // a border edge
         split(f, g, a, b);
-        ++splits;
-        break;
+        return true;
       }
-    }
-    return splits;
+      return false;
+    });
   }
 
   // Finishing only: where a face on a border edge stays below 25°, one of its apex's two edges in
@@ -95,27 +89,20 @@ class PatchAngles {
   // nor several border edges at once: the split gives the far edge its own apex, with a face
   // between the two at the corner.
   int splitBorderApexes() {
-    int splits = 0;
-    const int faceCount = static_cast<int>(m_.faces.size());
-    for (int f = 0; f < faceCount; ++f) {
-      if (!patch_[f]) continue;
-      const Face t = m_.faces[f];
-      if (smallestAngle(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]) >= kEarDegrees) continue;
+    return splitEachPatchFace([&](int f, const Face& t) {
+      if (faceAngle(t) >= kEarDegrees) return false;
       for (int k = 0; k < 3; ++k) {
         const int a = t[k], b = t[(k + 1) % 3], v = t[(k + 2) % 3];
         if (v < firstNew_ || !onBorder(f, a, b)) continue;
         // v's two edges in f, directed as in f: (b, v) and (v, a).
         for (auto [p, q] : {std::pair{b, v}, std::pair{v, a}}) {
           const int g = across(f, p, q);
-          if (g >= 0 && patch_[g] && trySplit(f, g, p, q, v)) {
-            ++splits;
-            break;
-          }
+          if (g >= 0 && patch_[g] && trySplit(f, g, p, q, v)) return true;
         }
-        break;  // with an apex inside the patch, f has one border edge at most
+        return false;  // with an apex inside the patch, f has one border edge at most
       }
-    }
-    return splits;
+      return false;
+    });
   }
 
   int flipPass() {
@@ -139,6 +126,23 @@ class PatchAngles {
   }
 
  private:
+  // Calls `trySplitAt(f, t)` (true: it split) on each patch face f, as t, that was there when the
+  // pass began: the faces a split appends are new and wait for the next pass. Returns the splits.
+  template <class TrySplit>
+  int splitEachPatchFace(TrySplit trySplitAt) {
+    int splits = 0;
+    const int faceCount = static_cast<int>(m_.faces.size());
+    for (int f = 0; f < faceCount; ++f) {
+      if (!patch_[f]) continue;
+      const Face t = m_.faces[f];  // a copy: the split rewrites face f
+      splits += trySplitAt(f, t);
+    }
+    return splits;
+  }
+
+  // The smallest angle (degrees) of face t where it is.
+  double faceAngle(const Face& t) const { return smallestAngle(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]); }
+
   // The face other than f on edge (a, b), or -1.
   int across(int f, int a, int b) const {
     for (int g : faces_[a]) {
@@ -160,7 +164,7 @@ class PatchAngles {
     double worst = 180;
     for (int f : faces_[v]) {
       const Face& t = m_.faces[f];
-      worst = std::min(worst, smallestAngle(m_.positions[t[0]], m_.positions[t[1]], m_.positions[t[2]]));
+      worst = std::min(worst, faceAngle(t));
     }
     return worst;
   }
@@ -187,10 +191,45 @@ class PatchAngles {
 
   // Moves v to the best of its candidate places; true if it moved.
   bool place(int v) {
+    Vec3 normal, centroid;
+    int neighbours = 0;
+    if (!ringOf(v, normal, centroid, neighbours)) return false;
+    const Vec3 here = m_.positions[v];
+    double best = worstAngle(v, here, normal);
+    if (best >= goodEnough_) return false;
+    centroid /= neighbours;
+    std::vector<Vec3> candidates{centroid};
+    std::vector<std::pair<int, int>> borderEdges;  // the border edges v faces (v is their apex)
+    addApexCandidates(v, here, candidates, borderEdges);
+    const double reach = meanEdge(v, here, neighbours);
+    const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+    addSmallSteps(here, reach, e1, e2, candidates);
+    Vec3 bestPlace = here;
+    for (const Vec3& c : candidates) {
+      const Vec3 p = here + (c - here) - (c - here).dot(normal) * normal;  // within the tangent plane
+      const double a = worstAngle(v, p, normal);
+      if (a > best + kGain) {
+        best = a;
+        bestPlace = p;
+      }
+    }
+    if (finishing_ && !borderEdges.empty()) {
+      const auto [c1, c2] = searchPlane(borderEdges, normal, e1, e2);
+      compassSearch(v, normal, reach, c1, c2, best, bestPlace);
+    }
+    if (bestPlace == here) return false;
+    m_.positions[v] = bestPlace;
+    touch(v);
+    return true;
+  }
+
+  // v's faces, all in the patch (false otherwise, or with no faces or no normal: v stays): their
+  // summed normal, unit, and the sum of v's neighbours over them (`neighbours` of them, each once
+  // a face).
+  bool ringOf(int v, Vec3& normal, Vec3& centroid, int& neighbours) const {
     const std::vector<int>& around = faces_[v];
     if (around.empty()) return false;
-    Vec3 normal = Vec3::Zero(), centroid = Vec3::Zero();
-    int neighbours = 0;
+    normal = Vec3::Zero(), centroid = Vec3::Zero();
     for (int f : around) {
       if (!patch_[f]) return false;  // only vertices inside the patch move
       const Face& t = m_.faces[f];
@@ -203,22 +242,20 @@ class PatchAngles {
     }
     if (!(normal.norm() > 0)) return false;
     normal.normalize();
-    const Vec3 here = m_.positions[v];
-    double best = worstAngle(v, here, normal);
-    if (best >= goodEnough_) return false;
-    centroid /= neighbours;
-    std::vector<Vec3> candidates{centroid};
-    bool facesBorder = false;  // v is the apex of a border edge
-    std::vector<std::pair<int, int>> borderEdges;  // the border edges v faces
-    // The apex of the equilateral triangle on each border edge v faces, on v's side of it.
-    for (int f : around) {
+    return true;
+  }
+
+  // For each border edge v faces (into `borderEdges`), into `candidates`: the apex of the
+  // equilateral triangle on it on v's side, halfway there, the apex across it, and v mirrored.
+  void addApexCandidates(int v, const Vec3& here, std::vector<Vec3>& candidates,
+                         std::vector<std::pair<int, int>>& borderEdges) const {
+    for (int f : faces_[v]) {
       const Face& t = m_.faces[f];
       int k = 0;
       while (t[k] != v) ++k;
       const int a = t[(k + 1) % 3], b = t[(k + 2) % 3];
       const int g = across(f, a, b);
       if (g >= 0 && patch_[g]) continue;
-      facesBorder = true;
       borderEdges.push_back({a, b});
       const Vec3 mid = 0.5 * (m_.positions[a] + m_.positions[b]), ab = m_.positions[b] - m_.positions[a];
       Vec3 side = (here - mid) - (here - mid).dot(ab) / ab.squaredNorm() * ab;
@@ -230,61 +267,63 @@ class PatchAngles {
       candidates.push_back(mid - std::sqrt(3.0) / 2 * ab.norm() * side.normalized());
       candidates.push_back(here - 2 * side);  // v mirrored in the edge
     }
-    // And small steps around it: where the ideal places fold a face or trade one thin face for
-    // another, a step of a tenth or a quarter of the mean edge often helps.
+  }
+
+  // The mean length of v's edges (each counted once a face, as ringOf counts the neighbours).
+  double meanEdge(int v, const Vec3& here, int neighbours) const {
     double reach = 0;
-    for (int f : around)
+    for (int f : faces_[v])
       for (int x : m_.faces[f])
         if (x != v) reach += (m_.positions[x] - here).norm();
-    reach /= neighbours;
-    const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+    return reach / neighbours;
+  }
+
+  // Small steps around v: where the ideal places fold a face or trade one thin face for another,
+  // a step of a tenth or a quarter of the mean edge often helps.
+  static void addSmallSteps(const Vec3& here, double reach, const Vec3& e1, const Vec3& e2,
+                            std::vector<Vec3>& candidates) {
     for (double step : {0.1, 0.25})
       for (int k = 0; k < 8; ++k) {
         const double phi = k * std::acos(-1.0) / 4;
         candidates.push_back(here + step * reach * (std::cos(phi) * e1 + std::sin(phi) * e2));
       }
-    Vec3 bestPlace = here;
-    for (const Vec3& c : candidates) {
-      const Vec3 p = here + (c - here) - (c - here).dot(normal) * normal;  // within the tangent plane
-      const double a = worstAngle(v, p, normal);
-      if (a > best + kGain) {
-        best = a;
-        bestPlace = p;
-      }
-    }
-    // Then, in a finishing pass and for the apex of a border edge only, a compass search from the
-    // best of them (16 directions, the step halved down to a two-thousandth of the mean edge): an
-    // apex shared by two border edges of unequal length has one best place between them
-    // (cornerBound, hole_boundary.h), on a ridge of the smallest angle that the fixed steps above
-    // missed by 0.5–1° (a 39° corner between border edges of 0.10 and 0.39: 17.5° instead of its
-    // 18.26°). Not before the flow, which moves the apexes again (and the flow stopped at a settled
-    // shape then ended 3·10⁻⁴ of the radius away from the plateau's on a cylinder hole), and not
-    // inside the patch: a tangential move leaves the surface by its square times the curvature.
+  }
+
+  // The plane compassSearch steps in, as two unit directions: v's tangent plane (e1, e2), but for
+  // an apex of two border edges that meet at a corner, the plane of those two edges (where
+  // cornerBound, hole_boundary.h, finds the corner's best split): on the armadillo's 794-edge hole
+  // (a 39.2° corner between border edges of 0.10 and 0.39) the tangent-plane search stopped at
+  // 18.248°, under the bound's 18.260°; this one reaches 18.95° (both faces at the corner
+  // balanced). Its two faces lie across that corner, nearly in its plane, so the steps stay as small.
+  std::pair<Vec3, Vec3> searchPlane(const std::vector<std::pair<int, int>>& borderEdges, const Vec3& normal,
+                                    const Vec3& e1, const Vec3& e2) const {
+    if (borderEdges.size() != 2) return {e1, e2};
+    const auto [a0, b0] = borderEdges[0];
+    const auto [a1, b1] = borderEdges[1];
+    const int c = b0 == a1 ? b0 : b1 == a0 ? b1 : -1;
+    if (c < 0) return {e1, e2};
+    const int x = c == b0 ? a0 : b0, y = c == b0 ? b1 : a1;
+    Vec3 n = (m_.positions[x] - m_.positions[c]).cross(m_.positions[y] - m_.positions[c]);
+    if (!(n.norm() > 0)) return {e1, e2};
+    n.normalize();
+    if (n.dot(normal) < 0) n = -n;
+    const Vec3 c1 = n.unitOrthogonal();
+    return {c1, n.cross(c1)};
+  }
+
+  // In a finishing pass and for the apex of a border edge only, a compass search from `bestPlace`
+  // (16 directions in the plane of c1 and c2, the step halved down to a two-thousandth of the mean
+  // edge), raising `best`: an apex shared by two border edges of unequal length has one best place
+  // between them (cornerBound, hole_boundary.h), on a ridge of the smallest angle that the fixed
+  // steps missed by 0.5–1° (a 39° corner between border edges of 0.10 and 0.39: 17.5° instead of
+  // its 18.26°). Not before the flow, which moves the apexes again (and the flow stopped at a
+  // settled shape then ended 3·10⁻⁴ of the radius away from the plateau's on a cylinder hole), and
+  // not inside the patch: a tangential move leaves the surface by its square times the curvature.
+  void compassSearch(int v, const Vec3& normal, double reach, const Vec3& c1, const Vec3& c2, double& best,
+                     Vec3& bestPlace) const {
     constexpr int kMaxProbes = 64;  // bounds a slow creep (each move gains at least kGain)
     int probes = 0;
-    // An apex of two border edges that meet at a corner steps along the plane of those two edges
-    // (directions parallel to it), where cornerBound (hole_boundary.h) finds the corner's best
-    // split, instead of along its own tangent plane: on the armadillo's 794-edge hole (a 39.2°
-    // corner between border edges of 0.10 and 0.39) the tangent-plane search stopped at 18.248°,
-    // under the bound's 18.260°; this one reaches 18.95° (both faces at the corner balanced). Its
-    // two faces lie across that corner, nearly in its plane, so the steps stay as small.
-    Vec3 c1 = e1, c2 = e2;
-    if (borderEdges.size() == 2) {
-      const auto [a0, b0] = borderEdges[0];
-      const auto [a1, b1] = borderEdges[1];
-      const int c = b0 == a1 ? b0 : b1 == a0 ? b1 : -1;
-      if (c >= 0) {
-        const int x = c == b0 ? a0 : b0, y = c == b0 ? b1 : a1;
-        Vec3 n = (m_.positions[x] - m_.positions[c]).cross(m_.positions[y] - m_.positions[c]);
-        if (n.norm() > 0) {
-          n.normalize();
-          if (n.dot(normal) < 0) n = -n;
-          c1 = n.unitOrthogonal();
-          c2 = n.cross(c1);
-        }
-      }
-    }
-    for (double step = 0.05 * reach; finishing_ && facesBorder && step > 0.0005 * reach && probes < kMaxProbes; ++probes) {
+    for (double step = 0.05 * reach; step > 0.0005 * reach && probes < kMaxProbes; ++probes) {
       bool moved = false;
       for (int k = 0; k < 16 && !moved; ++k) {
         const double phi = k * std::acos(-1.0) / 8;
@@ -298,10 +337,6 @@ class PatchAngles {
       }
       if (!moved) step *= 0.5;
     }
-    if (bestPlace == here) return false;
-    m_.positions[v] = bestPlace;
-    touch(v);
-    return true;
   }
 
   // The smallest angle (degrees) of v's faces with v at p; -1 if one would turn against `normal`.

@@ -20,12 +20,11 @@ namespace elastica {
 void refinePatch(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
                  const PatchRefinementOptions& opt = {});
 
-/// Lowers the `sigma` of each vertex on the patch's border (a corner of an edge with one patch
-/// face) to the mean length of its border edges where that is shorter, for a patch whose
-/// refinement asked for no vertex inside: the mean length of all the mesh edges at a border
-/// vertex reads long where the mesh's triangles are long across the border (CGAL's bull: border
-/// edges of 0.008 against 0.014), and Liepa's rule then leaves a fan of needles. Returns true if
-/// a `sigma` changed.
-bool sizeBorderByItsOwnEdges(const TriMesh& mesh, const std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma);
+/// refinePatch, and again for a patch it gave no vertex inside whose smallest angle stays below
+/// `needleDegrees` (sizeBorderByItsOwnEdges, patch_refinement.cpp, first sizes its border by the
+/// border edges' own lengths): CGAL's bull, a 21-edge hole stayed a fan at 10.9° where the border
+/// allows 22.5°.
+void refinePatchOrItsFan(TriMesh& mesh, std::vector<std::uint8_t>& patchFace, std::vector<double>& sigma,
+                         const PatchRefinementOptions& opt, double needleDegrees);
 
 }  // namespace elastica
