@@ -318,12 +318,125 @@ bool flipsMadeFacesCross(const TriMesh& beforeFlips, FlowState& state) {
   return rewrittenFacesCross(beforeFlips, state.mesh(), active);
 }
 
+// vectorStage's integrator: on a selection, damped where its model overshoots
+// (VectorIntegrator::dampOvershoots): a region's stage stalled by its refusals gained nothing from
+// the schedule's reflows (their remeshings left the region as it was), where a whole mesh's stall
+// leads to the remeshing that frees it. On a selection, the jump limit asks whether the step
+// strains the mesh (VectorIntegrator::strainJumpLimit): a region moving tens of edge lengths over
+// a scan's small triangles was held to them at every step. Whole meshes keep the per-vertex limit
+// (their remeshings even the triangles out). On a selection, past the shape's time, preconditioned
+// L-BFGS (VectorIntegrator::quasiNewton): a region's tail at τ ≫ T lowered W by 0.05–0.5 % an
+// attempt for over a hundred attempts.
+void configureVectorIntegrator(VectorIntegrator& integrator, const FlowState& state, bool guardEmbedding,
+                               bool withHandles, double shapeTime) {
+  const bool region = !state.selection().empty();
+  integrator.guardEmbedding(guardEmbedding);
+  integrator.saddleStiffness(withHandles);
+  integrator.dampOvershoots(region);
+  integrator.strainJumpLimit(region);
+  integrator.quasiNewton(region, shapeTime);
+}
+
+// vectorStage's step size τ: ×2 after a step, within kCeilingMargin of the ceiling (the last
+// refused size, which rises kVectorCeilingGrow per accepted step: a refused probe costs a solve,
+// and the elephant's steps near their limit were refused every third attempt at ×1.2).
+struct VectorStepSize {
+  static constexpr double kGrowVector = 2, kVectorCeilingGrow = 1.2, kStuckFactor = 1e-4;
+  double tau;
+  double ceiling = std::numeric_limits<double>::infinity();
+  double lastAccepted = 0, largestTau = 0;
+
+  // After a refusal. A probe above the last accepted step goes back to just below it; otherwise
+  // halve, and from beyond T straight down to T: there every mode is relaxed within the step, and
+  // a smaller τ gives the same step (joint and elk grew τ to 1e11 T and more; after a refusal the
+  // elephant halved 14 times from 1.4e4 T to T, each attempt refused for the same faces). (Genus 0
+  // keeps the plain ×0.5: its runs did not need it, and MeshLab's float input and the CLI's double
+  // then part ways on a noisy sphere, tests/plugin/meshlabserver_test.cpp.)
+  void refused(bool withHandles, double shapeTime) {
+    ceiling = tau;
+    if (!withHandles) tau *= kShrink;
+    else tau = tau > lastAccepted && lastAccepted > 0 ? std::min(lastAccepted, kCeilingMargin * tau)
+                                                      : std::min(tau * kShrink, shapeTime);
+  }
+  // τ fell below the smallest step, or to kStuckFactor of the stage's largest accepted step (or of
+  // T, if that is smaller: after a step far beyond T, a remeshed stage's first refusals are not stuck).
+  bool stuck(double ell4, double shapeTime) const {
+    return tau < kSmallestTau * ell4 || tau < kStuckFactor * std::min(largestTau, shapeTime);
+  }
+  // After an accepted step that went `accepted` far in time.
+  void acceptedStep(double accepted, bool shortened) {
+    lastAccepted = tau;
+    largestTau = std::max(largestTau, accepted);
+    if (!shortened) tau = std::min(tau * kGrowVector, kCeilingMargin * ceiling);
+    ceiling *= kVectorCeilingGrow;
+  }
+};
+
+// vectorStage's neck rule: κℓ above kNeckCurvatureTimesEdge and kNeckGrowth × its reference, κℓ at
+// the stage's start or, with `lowestSoFar` (the first stage on a region with handles), the lowest
+// κℓ so far.
+struct NeckRule {
+  static constexpr double kNeckCurvatureTimesEdge = 0.6, kNeckGrowth = 1.25;
+  bool lowestSoFar;
+  double reference;
+  bool formed(double curvatureTimesEdge) {
+    if (lowestSoFar) reference = std::min(reference, curvatureTimesEdge);
+    return curvatureTimesEdge > std::max(kNeckCurvatureTimesEdge, kNeckGrowth * reference);
+  }
+};
+
+// Edge flips are not steps: the embedding guard judges them too (a flip on knot1's swollen tube
+// once left four faces crossing), and flips that make faces cross are undone, and not made again
+// for the rest of the stage (flips that cross come back).
+void maintainGuarded(FlowState& state, double area0, bool guardEmbedding, TriMesh& beforeFlips) {
+  const long long version = state.connectivityVersion();
+  if (guardEmbedding) beforeFlips = state.mesh();
+  state.maintain(area0);
+  if (guardEmbedding && state.connectivityVersion() != version && flipsMadeFacesCross(beforeFlips, state)) {
+    FlowOptions noFlips = state.options();
+    noFlips.flipEdges = false;
+    state = FlowState(beforeFlips, state.selection(), noFlips, state.internalOptions(), state.slider());
+    state.maintain(area0);
+  }
+}
+
+// The tail of a stage: kTailWindow accepted steps that lowered E by at most kTailPlateau of it.
+// At steps of at least T each (every mode relaxed within each), the shape has settled and what
+// still moves is the mesh over it (the elk: 150 steps far beyond T moving vertices 0.05 ℓ
+// along their normals while E fell by 0.1 %); below T, the mesh holds the steps back (joint:
+// 200 steps at 1e-3 T, each refused above it), and the schedule remeshes. The resolution
+// check (flow/resolution_check.h) judges what this rule calls converged.
+class StageTail {
+ public:
+  explicit StageTail(double energy) : steps_{{energy, 0.0}} {}
+  // Adds an accepted step; with the rule applied (`judge`), whether the tail ends the stage: true
+  // with report.stop and `end` set.
+  bool ends(double energy, double accepted, double shapeTime, bool judge, FlowReport& report, StageEnd& end) {
+    constexpr int kTailWindow = 10;
+    constexpr double kTailPlateau = 1e-3;
+    steps_.emplace_back(energy, accepted);
+    if (!judge || static_cast<int>(steps_.size()) <= kTailWindow) return false;
+    const double before = steps_.front().first;
+    steps_.pop_front();
+    if (before - energy > kTailPlateau * std::max(std::abs(energy), 1.0)) return false;
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const auto& t : steps_) smallest = std::min(smallest, t.second);
+    const bool converged = smallest >= shapeTime;
+    report.stop = converged ? StopReason::Converged : StopReason::Stalled;
+    end = converged ? StageEnd::Settled : StageEnd::MeshBound;
+    return true;
+  }
+
+ private:
+  std::deque<std::pair<double, double>> steps_;  // (E, accepted step) per accepted step
+};
+
 // The vector scheme (flow/vector_integrator.h) with adaptive τ (×2 after a step, ×0.5 after a
 // refusal, below the last refused size). "Converged" is a statement about the shape at the flow's
 // own time scale, the relaxation time T = A²/kShapeScaleFactor of the moving region's slowest
 // bending mode (A its area): two accepted steps in a row whose normal motion, carried on for T
 // (at τ ≥ T the step itself), moves no vertex by more than `shapeTolerance` mean edge lengths, or
-// the stage's tail (below). An energy rate alone is not used: near a round sphere E is so flat
+// the stage's tail (StageTail). An energy rate alone is not used: near a round sphere E is so flat
 // that a 2 % ellipsoid reads as converged by any energy rate that a torus's slow mesh drift does
 // not also trip; the tail rule asks for steps of at least T, which relax such a mode within each
 // step, and the schedule checks a converged state's resolution. The state with
@@ -334,7 +447,7 @@ bool flipsMadeFacesCross(const TriMesh& beforeFlips, FlowState& state) {
 // MeshBound when τ fell to kStuckFactor of that step for other refusals (a mesh distorted by a
 // large change of shape); report.stop says Stalled, and the schedule remeshes and flows again.
 // The neck's reference is κℓ at the stage's start, except in the first stage of a run on a region
-// with handles (`firstStageWithHandles`), where it is the lowest κℓ so far: an input's creases and
+// with handles (NeckRule::lowestSoFar), where it is the lowest κℓ so far: an input's creases and
 // limbs a few edges across say nothing about a neck. After a remeshing the start is the reference
 // (the remesher has just set ℓ ≈ 0.4/κ). The stuck rule is measured against T too: after a step far
 // beyond T, a remeshed stage's first refusals are not stuck. Measurements: docs/decisions.md,
@@ -342,73 +455,35 @@ bool flipsMadeFacesCross(const TriMesh& beforeFlips, FlowState& state) {
 StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeTolerance, bool guardEmbedding,
                      bool startAtShapeScale, bool firstStage, bool withHandles, bool remeshing, double& lastTau, TriMesh& best,
                      double& bestEnergy) {
-  const bool firstStageWithHandles = firstStage && withHandles;
-  constexpr double kGrowVector = 2, kStuckFactor = 1e-4;
-  // The ceiling (the last refused step) rises this much per accepted step: a refused probe costs a
-  // solve, and the elephant's steps near their limit were refused every third attempt at ×1.2.
-  constexpr double kVectorCeilingGrow = 1.2;
-  double lastAccepted = 0;
   VectorIntegrator integrator;
-  integrator.guardEmbedding(guardEmbedding);
-  integrator.saddleStiffness(withHandles);
-  // On a selection, damped where its model overshoots (VectorIntegrator::dampOvershoots): a
-  // region's stage stalled by its refusals gained nothing from the schedule's reflows (their
-  // remeshings left the region as it was), where a whole mesh's stall leads to the remeshing that
-  // frees it.
-  integrator.dampOvershoots(!state.selection().empty());
-  // On a selection, the jump limit asks whether the step strains the mesh
-  // (VectorIntegrator::strainJumpLimit): a region moving tens of edge lengths over a scan's small
-  // triangles was held to them at every step. Whole meshes keep the per-vertex limit (their
-  // remeshings even the triangles out).
-  integrator.strainJumpLimit(!state.selection().empty());
   const CountCrossings<VectorIntegrator> countCrossings{integrator, run.report};
   FlowReport& report = run.report;
   const double ell = state.geometry().meanEdgeLength;
   const double ell4 = ell * ell * ell * ell;
   const double area0 = state.activeArea();
   const double shapeTime = area0 * area0 / kShapeScaleFactor;
-  // On a selection, past the shape's time, preconditioned L-BFGS (VectorIntegrator::quasiNewton):
-  // a region's tail at τ ≫ T lowered W by 0.05–0.5 % an attempt for over a hundred attempts.
-  integrator.quasiNewton(!state.selection().empty(), shapeTime);
-  double tau = std::max(kInitialTau * ell4, lastTau * kStageTauCarry);
+  configureVectorIntegrator(integrator, state, guardEmbedding, withHandles, shapeTime);
+  VectorStepSize step{std::max(kInitialTau * ell4, lastTau * kStageTauCarry)};
   // The shape came converged from the coarser level: only what the subdivision changed is new, and
   // it relaxes at any step.
-  if (startAtShapeScale) tau = std::max(tau, shapeTime);
-  double ceiling = std::numeric_limits<double>::infinity();
+  if (startAtShapeScale) step.tau = std::max(step.tau, shapeTime);
   int settled = 0;
-  double largestTau = 0;
   int crossingsInARow = 0, contactSteps = 0;
   constexpr int kContactSteps = 10;
   TriMesh beforeFlips;
-  constexpr double kNeckCurvatureTimesEdge = 0.6, kNeckGrowth = 1.25;
-  double neckReference = largestCurvatureTimesEdge(state);
-  constexpr int kTailWindow = 10;
-  constexpr double kTailPlateau = 1e-3;
-  std::deque<std::pair<double, double>> tail{{state.energy(), 0.0}};  // (E, accepted step) per accepted step
+  NeckRule neck{firstStage && withHandles, largestCurvatureTimesEdge(state)};
+  StageTail tail(state.energy());
   bestEnergy = state.energy();
   best = state.mesh();
   while (!run.limitReached()) {
     ++report.steps;
-    if (!integrator.tryStep(state, tau)) {
+    if (!integrator.tryStep(state, step.tau)) {
       ++report.rejectedSteps;
       crossingsInARow = integrator.lastRejectionCrossed() ? crossingsInARow + 1 : 0;
-      ceiling = tau;
-      // A probe above the last accepted step goes back to just below it; otherwise halve, and
-      // from beyond T straight down to T: there every mode is relaxed within the step, and a
-      // smaller τ gives the same step (joint and elk grew τ to 1e11 T and more; after a refusal
-      // the elephant halved 14 times from 1.4e4 T to T, each attempt refused for the same faces).
-      // (Genus 0 keeps the plain ×0.5: its runs did not need it, and MeshLab's float input and the
-      // CLI's double then part ways on a noisy sphere, tests/plugin/meshlabserver_test.cpp.)
-      if (!withHandles) tau *= kShrink;
-      else tau = tau > lastAccepted && lastAccepted > 0 ? std::min(lastAccepted, kCeilingMargin * tau)
-                                                        : std::min(tau * kShrink, shapeTime);
-      if (tau < kSmallestTau * ell4 || tau < kStuckFactor * std::min(largestTau, shapeTime)) {
-        if (crossingsInARow > 0) {
-          report.stop = StopReason::SelfContact;
-          return StageEnd::Settled;
-        }
-        report.stop = StopReason::Stalled;
-        return StageEnd::MeshBound;
+      step.refused(withHandles, shapeTime);
+      if (step.stuck(ell4, shapeTime)) {
+        report.stop = crossingsInARow > 0 ? StopReason::SelfContact : StopReason::Stalled;
+        return crossingsInARow > 0 ? StageEnd::Settled : StageEnd::MeshBound;
       }
       continue;
     }
@@ -421,30 +496,15 @@ StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeT
       report.stop = StopReason::SelfContact;
       return StageEnd::Settled;
     }
-    // Edge flips are not steps: the embedding guard judges them too (a flip on knot1's swollen
-    // tube once left four faces crossing), and flips that make faces cross are undone.
-    const long long version = state.connectivityVersion();
-    if (guardEmbedding) beforeFlips = state.mesh();
-    state.maintain(area0);
-    if (guardEmbedding && state.connectivityVersion() != version && flipsMadeFacesCross(beforeFlips, state)) {
-      FlowOptions noFlips = state.options();  // for the rest of the stage (flips that cross come back)
-      noFlips.flipEdges = false;
-      state = FlowState(beforeFlips, state.selection(), noFlips, state.internalOptions(), state.slider());
-      state.maintain(area0);
-    }
+    maintainGuarded(state, area0, guardEmbedding, beforeFlips);
     ++stage.steps;
-    run.time += tau * integrator.lastExtrapolation();
-    const double accepted = tau * integrator.lastExtrapolation();
-    lastTau = tau;
-    lastAccepted = tau;
-    largestTau = std::max(largestTau, accepted);
-    if (!integrator.lastStepShortened()) tau = std::min(tau * kGrowVector, kCeilingMargin * ceiling);
-    ceiling *= kVectorCeilingGrow;
+    run.time += step.tau * integrator.lastExtrapolation();
+    const double accepted = step.tau * integrator.lastExtrapolation();
+    lastTau = step.tau;
+    step.acceptedStep(accepted, integrator.lastStepShortened());
     const double energy = state.energy();
     if (run.record(state, stage.level, energy)) return StageEnd::Settled;
-    const double curvatureTimesEdge = largestCurvatureTimesEdge(state);
-    if (firstStageWithHandles) neckReference = std::min(neckReference, curvatureTimesEdge);
-    if (curvatureTimesEdge > std::max(kNeckCurvatureTimesEdge, kNeckGrowth * neckReference)) {
+    if (neck.formed(largestCurvatureTimesEdge(state))) {
       // The energy from here on is the mesh's, not the surface's: this state is not kept.
       report.stop = StopReason::Stalled;
       return StageEnd::NeckFormed;
@@ -453,30 +513,12 @@ StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeT
       bestEnergy = energy;
       best = state.mesh();
     }
-    // The tail of a stage: kTailWindow accepted steps that lowered E by at most kTailPlateau of it.
-    // At steps of at least T each (every mode relaxed within each), the shape has settled and what
-    // still moves is the mesh over it (the elk: 150 steps far beyond T moving vertices 0.05 ℓ
-    // along their normals while E fell by 0.1 %); below T, the mesh holds the steps back (joint:
-    // 200 steps at 1e-3 T, each refused above it), and the schedule remeshes. The resolution
-    // check (flow/resolution_check.h) judges what this rule calls converged. Only where the
-    // schedule remeshes (`remeshing`: with the connectivity kept, the mesh is the user's), and on
-    // shapes with handles (on genus 0 the rule's stops moved a noisy sphere's remeshings apart
-    // between MeshLab's float input and the CLI's double, tests/plugin/meshlabserver_test.cpp).
-    tail.emplace_back(energy, accepted);
-    if (remeshing && withHandles && static_cast<int>(tail.size()) > kTailWindow) {
-      const double before = tail.front().first;
-      tail.pop_front();
-      if (before - energy <= kTailPlateau * std::max(std::abs(energy), 1.0)) {
-        double smallest = std::numeric_limits<double>::infinity();
-        for (const auto& t : tail) smallest = std::min(smallest, t.second);
-        if (smallest >= shapeTime) {
-          report.stop = StopReason::Converged;
-          return StageEnd::Settled;
-        }
-        report.stop = StopReason::Stalled;
-        return StageEnd::MeshBound;
-      }
-    }
+    // The tail rule only where the schedule remeshes (`remeshing`: with the connectivity kept, the
+    // mesh is the user's), and on shapes with handles (on genus 0 its stops moved a noisy sphere's
+    // remeshings apart between MeshLab's float input and the CLI's double,
+    // tests/plugin/meshlabserver_test.cpp).
+    StageEnd end = StageEnd::Settled;
+    if (tail.ends(energy, accepted, shapeTime, remeshing && withHandles, report, end)) return end;
     // The normal motion this step shows, carried on over the slowest mode's time T: at τ ≥ T the
     // step itself (it relaxes every mode at once), below it the normal speed times T.
     const double ellNow = state.geometry().meanEdgeLength;

@@ -409,24 +409,14 @@ long long vertexBudget(long long moving, int genus) {
   return moving + static_cast<long long>(std::ceil(kWidening * kVerticesPerEnergy * 8 * M_PI * (genus + 3)));
 }
 
-bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving,
-                        const std::vector<std::uint8_t>* refineAt, int crossingRefinements, bool onSurface) {
-  const Topology& topo = moving.topology();
-  const VertexRoles& roles = moving.roles();
-  const TriMesh& mesh = moving.mesh();
-  std::vector<std::uint8_t> region = movingFaces(mesh, roles);
-  const double target = coarsening * equilateralEdge(mesh, region);
-  if (!(target > 0) || hasFarVertex(mesh, region, target)) return false;
+namespace {
 
-  // A mesh that crossed itself before is judged on a selection by the region's crossings (its
-  // faces against the mesh): a scan that crosses itself somewhere else (the devil mannequin does)
-  // must not let the region's remeshing cross (its first isotropic remeshing of a 777-face region
-  // took E 599 to 75,216 and every step after was refused). The whole mesh is not judged then:
-  // the cow crosses itself at 137 faces, and its remeshings change which faces cross while the
-  // flow rounds it.
-  const bool crossedBefore = selfIntersects(mesh);
-  const bool local = crossedBefore && !moving.selection().empty();
-  const std::size_t crossingBefore = local ? selfIntersectingFaces(mesh, &region).size() : 0;
+// The remeshing's target edge length per vertex: `target`, where the surface bends within a few
+// edges held to kTargetCurvatureTimesEdge / κ (curvatureAdaptive), and shorter at `refineAt`.
+std::vector<double> remeshTargets(const MovingRegion& moving, double target, bool curvatureAdaptive,
+                                  const std::vector<std::uint8_t>* refineAt) {
+  const Topology& topo = moving.topology();
+  const TriMesh& mesh = moving.mesh();
   std::vector<double> sigma(mesh.positions.size(), target);
   if (curvatureAdaptive) {
     // Where the surface bends within a few edges (a neck, a tight handle), the discrete energy
@@ -447,6 +437,88 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
       sigma[v] = std::min(sigma[v], std::max(kUnresolvedRefinement * ell / topo.valence(v), target / (2 * kMaxRefinement)));
     }
   }
+  return sigma;
+}
+
+// Within `maxMoving`: the targets are fitted to it (fitTargets), and fitted again to a smaller
+// count in proportion where the remeshing left more than it predicted; false where it still leaves
+// more (or the deadline passed): the remeshing is not made.
+bool remeshWithinBudget(const MovingRegion& moving, const std::vector<std::uint8_t>& region, const std::vector<double>& sigma,
+                        long long maxMoving, const PatchRemeshingOptions& options, TriMesh& remeshed,
+                        std::vector<std::uint8_t>& remeshedRegion) {
+  const TriMesh& mesh = moving.mesh();
+  const long long fixed = mesh.vertexCount() - moving.roles().freeCount;
+  double aim = static_cast<double>(maxMoving);
+  for (int attempt = 0;; ++attempt) {
+    std::vector<double> fitted = sigma;
+    if (maxMoving > 0) fitTargets(mesh, region, fitted, aim);
+    remeshed = mesh;
+    remeshedRegion = region;
+    std::vector<std::uint8_t> movable = moving.roles().free;
+    remeshRegion(remeshed, remeshedRegion, fitted, movable, options);
+    if (moving.pastDeadline()) return false;
+    const long long left = remeshed.vertexCount() - fixed;
+    if (maxMoving <= 0 || left <= maxMoving) return true;
+    if (attempt == kBudgetAttempts) return false;
+    aim *= static_cast<double>(maxMoving) / left;
+  }
+}
+
+// Whether a remeshing (`remeshed`, its region's flags `region`; `before` the flags on the input)
+// folded the surface: vertices stacked at one point, or on a selection a face folded flat.
+bool remeshingFolds(const MovingRegion& moving, const TriMesh& remeshed, const std::vector<std::uint8_t>& region,
+                    const std::vector<std::uint8_t>& before) {
+  // A remeshing that stacks vertices at one point is undone, also where the mesh crossed itself
+  // before and the crossing test cannot judge it (a noisy region of the lion's head scan: the
+  // adaptive remeshing left 49 vertices at one point and the next stage's energy at 4,000 times
+  // the last). Comparing the crossing counts instead undid the cow's first remeshing (its input
+  // crosses at 137 faces), which then never became round.
+  if (stacksVertices(remeshed, region)) return true;
+  // A remeshing of a selection that leaves a face folded flat (a corner under
+  // kDegenerateAngleDegrees, and below the region's own smallest corner before) is undone: the
+  // isotropic remeshing of a 10,000-face region of a scan that crosses itself there (man.off: 253
+  // of its faces cross; mannequin-devil: 293) left corners of 4e-14° and 1e-12°, on which the flow's
+  // matrices are not positive definite and every attempt of both schemes was refused (36 and 144
+  // attempts, then `unchanged`); the curvature-adaptive remeshing of the mannequin's region after
+  // its first stage left 0.0064° (from 9.7°) and the region's energy 78.5 → 531, and the run never
+  // got back below it; the first remeshings of small regions stay far above the limit
+  // (docs/decisions.md, "Regions"). Whole meshes are left as they were.
+  constexpr double kDegenerateAngleDegrees = 0.1;
+  if (moving.selection().empty()) return false;
+  const double after = smallestAngleDegrees(remeshed, region);
+  return after < kDegenerateAngleDegrees && after < smallestAngleDegrees(moving.mesh(), before);
+}
+
+// Where crossings cannot judge it (a noisy region crossing itself), a remeshing that leaves the
+// region's energy kRemeshBlowUp times its value is a folded surface, not a resampled one: the
+// devil mannequin's noisy region 1 went from E 883 to 207,260, and every step after was refused.
+bool remeshingBlewUp(const TriMesh& mesh, const std::vector<std::uint8_t>& before, const TriMesh& remeshed,
+                     const std::vector<std::uint8_t>& region) {
+  constexpr double kRemeshBlowUp = 10;
+  FlowOptions measure;
+  const double energyBefore = regionEnergy(mesh, before, measure), energyAfter = regionEnergy(remeshed, region, measure);
+  return !(energyAfter <= kRemeshBlowUp * std::max(std::abs(energyBefore), 1.0));
+}
+
+}  // namespace
+
+bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coarsening, long long maxMoving,
+                        const std::vector<std::uint8_t>* refineAt, int crossingRefinements, bool onSurface) {
+  const TriMesh& mesh = moving.mesh();
+  std::vector<std::uint8_t> region = movingFaces(mesh, moving.roles());
+  const double target = coarsening * equilateralEdge(mesh, region);
+  if (!(target > 0) || hasFarVertex(mesh, region, target)) return false;
+
+  // A mesh that crossed itself before is judged on a selection by the region's crossings (its
+  // faces against the mesh): a scan that crosses itself somewhere else (the devil mannequin does)
+  // must not let the region's remeshing cross (its first isotropic remeshing of a 777-face region
+  // took E 599 to 75,216 and every step after was refused). The whole mesh is not judged then:
+  // the cow crosses itself at 137 faces, and its remeshings change which faces cross while the
+  // flow rounds it.
+  const bool crossedBefore = selfIntersects(mesh);
+  const bool local = crossedBefore && !moving.selection().empty();
+  const std::size_t crossingBefore = local ? selfIntersectingFaces(mesh, &region).size() : 0;
+  std::vector<double> sigma = remeshTargets(moving, target, curvatureAdaptive, refineAt);
   PatchRemeshingOptions options;
   // Curvature-adaptive edges and a cage's long slivers need more vertices, but not without end.
   options.maxVertices = kMaxGrowth * mesh.vertexCount() + 1000;
@@ -464,48 +536,12 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
     surface = std::make_unique<SurfaceProjector>(mesh, 180);
     options.surface = surface.get();
   }
-  // Within `maxMoving`: the targets are fitted to it (fitTargets), and fitted again to a smaller
-  // count in proportion where the remeshing left more than it predicted; a remeshing that still
-  // leaves more is not made.
-  const long long fixed = mesh.vertexCount() - roles.freeCount;
   TriMesh remeshed;
   std::vector<std::uint8_t> remeshedRegion;
   for (int refinement = 0;; ++refinement) {
-    double aim = static_cast<double>(maxMoving);
-    for (int attempt = 0;; ++attempt) {
-      std::vector<double> fitted = sigma;
-      if (maxMoving > 0) fitTargets(mesh, region, fitted, aim);
-      remeshed = mesh;
-      remeshedRegion = region;
-      std::vector<std::uint8_t> movable = roles.free;
-      remeshRegion(remeshed, remeshedRegion, fitted, movable, options);
-      if (moving.pastDeadline()) return false;
-      const long long left = remeshed.vertexCount() - fixed;
-      if (maxMoving <= 0 || left <= maxMoving) break;
-      if (attempt == kBudgetAttempts) return false;
-      aim *= static_cast<double>(maxMoving) / left;
-    }
+    if (!remeshWithinBudget(moving, region, sigma, maxMoving, options, remeshed, remeshedRegion)) return false;
     region.swap(remeshedRegion);  // remeshedRegion: the flags before
-    // A remeshing that stacks vertices at one point is undone, also where the mesh crossed itself
-    // before and the crossing test cannot judge it (a noisy region of the lion's head scan: the
-    // adaptive remeshing left 49 vertices at one point and the next stage's energy at 4,000 times
-    // the last). Comparing the crossing counts instead undid the cow's first remeshing (its input
-    // crosses at 137 faces), which then never became round.
-    if (stacksVertices(remeshed, region)) return false;
-    // A remeshing of a selection that leaves a face folded flat (a corner under
-    // kDegenerateAngleDegrees, and below the region's own smallest corner before) is undone: the
-    // isotropic remeshing of a 10,000-face region of a scan that crosses itself there (man.off: 253
-    // of its faces cross; mannequin-devil: 293) left corners of 4e-14° and 1e-12°, on which the flow's
-    // matrices are not positive definite and every attempt of both schemes was refused (36 and 144
-    // attempts, then `unchanged`); the curvature-adaptive remeshing of the mannequin's region after
-    // its first stage left 0.0064° (from 9.7°) and the region's energy 78.5 → 531, and the run never
-    // got back below it; the first remeshings of small regions stay far above the limit
-    // (docs/decisions.md, "Regions"). Whole meshes are left as they were.
-    constexpr double kDegenerateAngleDegrees = 0.1;
-    if (!moving.selection().empty()) {
-      const double after = smallestAngleDegrees(remeshed, region);
-      if (after < kDegenerateAngleDegrees && after < smallestAngleDegrees(mesh, remeshedRegion)) return false;
-    }
+    if (remeshingFolds(moving, remeshed, region, remeshedRegion)) return false;
     if (local ? selfIntersectingFaces(remeshed, &region).size() > crossingBefore
               : !crossedBefore && selfIntersects(remeshed)) {
       // Two sheets of the surface closer than the target edge (a narrow tunnel, a thin wall): the
@@ -518,16 +554,7 @@ bool remeshMovingRegion(MovingRegion& moving, bool curvatureAdaptive, double coa
     }
     break;
   }
-  // Where crossings cannot judge it (a noisy region crossing itself), a remeshing that leaves the
-  // region's energy kRemeshBlowUp times its value is a folded surface, not a resampled one: the
-  // devil mannequin's noisy region 1 went from E 883 to 207,260, and every step after was refused.
-  constexpr double kRemeshBlowUp = 10;
-  if (local) {
-    FlowOptions measure;
-    const double before = regionEnergy(mesh, remeshedRegion, measure), after = regionEnergy(remeshed, region, measure);
-    if (!(after <= kRemeshBlowUp * std::max(std::abs(before), 1.0))) return false;
-  }
-
+  if (local && remeshingBlewUp(mesh, remeshedRegion, remeshed, region)) return false;
   return adopt(moving, std::move(remeshed), region);
 }
 

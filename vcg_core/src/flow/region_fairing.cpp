@@ -337,6 +337,16 @@ struct RegionRun {
   bool ran = false;
 };
 
+// A stop fair() calls final when the region is resolved: converged, or pressed against itself.
+bool saysFinal(StopReason stop) { return stop == StopReason::Converged || stop == StopReason::SelfContact; }
+
+// A run fairResolved may call final (a resolved region and a final stop): it beats one that is not.
+bool isFinal(const RegionRun& r) { return saysFinal(r.report.stop) && r.resolution.resolved(); }
+
+// A semi-implicit run before the vector run that makes the whole vector run unneeded
+// (kSemiFirstAttempts): converged and resolved; a stop pressed against itself is not enough.
+bool sparesVectorRun(const RegionRun& r) { return r.report.stop == StopReason::Converged && r.resolution.resolved(); }
+
 // fairGuarded from `mesh` and `selection` (copied) with `opt`. A semi-implicit run that diverges
 // counts as unchanged (the vector scheme's result stands); the vector scheme's divergence is the
 // caller's FlowDivergedError, as a run of fairGuarded alone.
@@ -379,11 +389,6 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
     return o;
   };
   auto canRun = [&](const FlowOptions& o) { return o.maxSteps > 0 && (!(opt.maxSeconds > 0) || o.maxSeconds > 0); };
-  const auto converged = [](const RegionRun& r) { return r.report.stop == StopReason::Converged && r.resolution.resolved(); };
-  // A result fair() may call final: converged (or pressed against itself) and resolved.
-  const auto final = [](const RegionRun& r) {
-    return (r.report.stop == StopReason::Converged || r.report.stop == StopReason::SelfContact) && r.resolution.resolved();
-  };
   RegionRun probe, vector, semi;
   // Only where the user's step limit leaves the probe and the semi-implicit run room beside the
   // whole vector run: under a tighter one they would take the attempts it needs.
@@ -398,7 +403,7 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
     }
   }
   const FlowOptions whole = remaining(Scheme::Automatic, opt.maxSteps);
-  if (!vector.ran && !(semi.ran && converged(semi)) && canRun(whole)) {
+  if (!vector.ran && !(semi.ran && sparesVectorRun(semi)) && canRun(whole)) {
     vector = runFrom(mesh, selection, whole);
     spend(vector.report);
   }
@@ -416,8 +421,8 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
   // which run comes back").
   const bool takeSemi = semi.ran && semi.report.stop != StopReason::Unchanged &&
                         (!vector.ran || vector.report.stop == StopReason::Unchanged ||
-                         (final(semi) != final(vector) ? final(semi)
-                                                       : semi.resolution.resolvedEnergy() < vector.resolution.resolvedEnergy()));
+                         (isFinal(semi) != isFinal(vector) ? isFinal(semi)
+                                                           : semi.resolution.resolvedEnergy() < vector.resolution.resolvedEnergy()));
   // Neither changed the region nor the vector scheme ran (the user's time limit): the probe's result.
   RegionRun& chosen = takeSemi ? semi : vector.ran ? vector : probe.ran ? probe : semi;
   const bool probeCameBack = &chosen == &probe;
@@ -433,8 +438,7 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
   report.seconds = seconds;
   report.regionRuns = runs;
   report.regionResolutionGap = chosen.resolution.gap();
-  if (!chosen.resolution.resolved() && (report.stop == StopReason::Converged || report.stop == StopReason::SelfContact))
-    report.stop = StopReason::Stalled;
+  if (!chosen.resolution.resolved() && saysFinal(report.stop)) report.stop = StopReason::Stalled;
   return report;
 }
 

@@ -183,88 +183,127 @@ double VectorIntegrator::jumpOvershoot(const FlowState& state) const {
   return std::min(overshoot, strain);
 }
 
-bool VectorIntegrator::tryStep(FlowState& state, double tau) {
+// The attempt's start: ∂W/∂X and W at the current positions, and the last accepted step's pair.
+void VectorIntegrator::evaluateStart(FlowState& state, const Geometry& geo) {
+  bendingGradient(state.topology(), geo, state.positions(), state.roles().active, bending_);
+  ++gradientEvaluations_;
+  if (quasiNewton_) addSecantPair(state, freeRows(bending_.gradient));
+  startEnergy_ = bending_.value;
+  termBefore_ = bending_.term;
+}
+
+// The step's matrix: M + τ/2 · C M⁻¹ C, the curvature stiffness, with `barrierStiffness` the
+// needle barrier's, and the damped rows' 1 + μ. Returns whether the barrier's stiffness was added.
+bool VectorIntegrator::assembleMatrix(FlowState& state, const Geometry& geo, const Curvature& curv, double tau,
+                                      bool barrierStiffness) {
+  const Topology& topo = state.topology();
+  rows_.solver->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, state.roles().active, rows_.index,
+                                      state.roles().freeCount, 1.0, 0.5 * tau);
+  edgeScratch_.resize(topo.edgeCount());
+  auto bend = [&](int v) { return curv.H[v] * curv.H[v] + (saddleStiffness_ ? std::max(0.0, -curv.K[v]) : 0.0); };
+  for (int e = 0; e < topo.edgeCount(); ++e) {
+    const auto& ev = topo.edgeVertices(e);
+    const double h2 = 0.5 * (bend(ev[0]) + bend(ev[1]));
+    edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
+  }
+  rows_.solver->system.addEdgeLaplacian(topo, edgeScratch_, rows_.index, kCurvatureStiffness * tau);
+  const bool withBarrier =
+      barrierStiffness && addBarrierStiffness(topo, geo, state.positions(), state.roles().activeFace, tau);
+  for (int v = 0; v < topo.vertexCount(); ++v)
+    if (rows_.index[v] >= 0 && damping_[v] > 0) rows_.solver->system.scaleDiagonal(rows_.index[v], 1 + damping_[v]);
+  return withBarrier;
+}
+
+// A refused attempt: the positions go back to the attempt's start.
+bool VectorIntegrator::rejectAttempt(FlowState& state, double tau) {
+  pairPending_ = false;
+  if (lastStepAccelerated_) {
+    // The pairs' model misled the step (W rose, faces turned or crossed, too many vertices to
+    // hold): the same attempt goes on with the plain step, whose refusal alone is the
+    // controller's business (τ halved, culprits damped); with no pairs left it is plain. The
+    // retry starts from the same positions, so it keeps the attempt's gradient and matrix.
+    if (lastRejectionCrossed_) --crossingRejections_;
+    ++acceleratedRefusals_;
+    state.positions() = saved_;
+    state.invalidate();
+    secant_.clear();
+    retryPlain_ = true;
+    const bool accepted = tryStep(state, tau);
+    retryPlain_ = false;
+    return accepted;
+  }
+  secant_.clear();
+  dampOvershoot(state.topology());
+  state.positions() = saved_;
+  state.invalidate();
+  return false;
+}
+
+// The free vertices at the attempt's start moved by `alpha` times the solved step.
+void VectorIntegrator::moveAlongStep(std::vector<Vec3>& positions, double alpha) const {
+  for (std::size_t v = 0; v < rows_.index.size(); ++v)
+    if (rows_.index[v] >= 0) positions[v] = saved_[v] + alpha * delta_[v];
+}
+
+// Every active face that turned over since the attempt's start has its corners added as culprits.
+bool VectorIntegrator::addTurnedFaceCulprits(const Topology& topo, const std::vector<std::uint8_t>& activeFace,
+                                             const Geometry& moved) {
+  bool turned = false;
+  for (int f = 0; f < topo.faceCount(); ++f) {
+    if (!activeFace[f] || moved.faceNormal[f].dot(faceNormalBefore_[f]) >= 0) continue;
+    turned = true;
+    for (int v : topo.faces()[f]) culprits_.push_back(v);
+  }
+  return turned;
+}
+
+// Whether an active face turned over since the attempt's start.
+bool VectorIntegrator::anyFaceTurned(const Topology& topo, const std::vector<std::uint8_t>& activeFace,
+                                     const Geometry& moved) const {
+  for (int f = 0; f < topo.faceCount(); ++f)
+    if (activeFace[f] && moved.faceNormal[f].dot(faceNormalBefore_[f]) < 0) return true;
+  return false;
+}
+
+// W rose by `rise`: the vertices whose terms rose most are culprits, until they make up the rise.
+// False where they do not, or take more than kMaxCulprits.
+bool VectorIntegrator::addRiseCulprits(int nv, double rise, int round) {
+  rises_.clear();
+  for (int v = 0; v < nv; ++v) {
+    const double r = bending_.term[v] - termBefore_[v];
+    if (r > 0) rises_.emplace_back(r, v);
+  }
+  const int take = std::min<int>(kMaxCulprits + 1, static_cast<int>(rises_.size()));
+  std::partial_sort(rises_.begin(), rises_.begin() + take, rises_.end(), std::greater<>());
+  double covered = 0;
+  for (int k = 0; k < take && covered < rise; ++k) covered += rises_[k].first, culprits_.push_back(rises_[k].second);
+  if (round == 0) overshot_ = culprits_;
+  return !(covered < rise || static_cast<int>(culprits_.size()) > kMaxCulprits);
+}
+
+// The culprits' free vertices and their rings are held; false if none is newly held.
+bool VectorIntegrator::holdCulprits(const Topology& topo) {
+  bool more = false;
+  auto hold = [&](int v) {
+    if (rows_.index[v] >= 0 && !held_[v]) held_[v] = 1, more = true;
+  };
+  for (int c : culprits_) {
+    hold(c);
+    for (int k = topo.ringBegin(c); k < topo.ringEnd(c); ++k) hold(topo.ringVertex(k));
+  }
+  return more;
+}
+
+// The step `scale` · δ, tried with ever more vertices held (step_holds.h) until W does not rise,
+// no face turns over and none crosses: true then (positions moved, energyAfter_ set), false where
+// the attempt is refused.
+bool VectorIntegrator::placeHeldStep(FlowState& state, double scale) {
   std::vector<Vec3>& positions = state.positions();
-  lastRejectionCrossed_ = false;
-  lastStepHeldContact_ = false;
-  lastExtrapolation_ = 1;
-  const Geometry& geo = state.geometryOnly();
   const Topology& topo = state.topology();
   const std::vector<std::uint8_t>& active = state.roles().active;
   const std::vector<std::uint8_t>& activeFace = state.roles().activeFace;
-  buildRows(state);
-  // The plain retry of a refused accelerated step (`retryPlain_`) starts where the first try did:
-  // its gradient, W and matrix are the ones at hand.
-  if (!retryPlain_) {
-    bendingGradient(topo, geo, positions, active, bending_);
-    ++gradientEvaluations_;
-    if (quasiNewton_) addSecantPair(state, freeRows(bending_.gradient));
-    startEnergy_ = bending_.value;
-    termBefore_ = bending_.term;
-  }
   const double before = startEnergy_;
-  auto reject = [&] {
-    pairPending_ = false;
-    if (lastStepAccelerated_) {
-      // The pairs' model misled the step (W rose, faces turned or crossed, too many vertices to
-      // hold): the same attempt goes on with the plain step, whose refusal alone is the
-      // controller's business (τ halved, culprits damped); with no pairs left it is plain. The
-      // retry starts from the same positions, so it keeps the attempt's gradient and matrix.
-      if (lastRejectionCrossed_) --crossingRejections_;
-      ++acceleratedRefusals_;
-      positions = saved_;
-      state.invalidate();
-      secant_.clear();
-      retryPlain_ = true;
-      const bool accepted = tryStep(state, tau);
-      retryPlain_ = false;
-      return accepted;
-    }
-    secant_.clear();
-    dampOvershoot(state.topology());
-    positions = saved_;
-    state.invalidate();
-    return false;
-  };
   const int nv = topo.vertexCount();
-  const Curvature& curv = state.curvature();
-  if (static_cast<int>(damping_.size()) != nv) damping_.assign(nv, 0.0);  // a new mesh
-  overshot_.clear();
-  auto assemble = [&](bool barrierStiffness) {
-    rows_.solver->system.assembleMatrix(topo, geo.edgeWeight, geo.vertexArea, active, rows_.index, state.roles().freeCount,
-                                   1.0, 0.5 * tau);
-    edgeScratch_.resize(topo.edgeCount());
-    auto bend = [&](int v) { return curv.H[v] * curv.H[v] + (saddleStiffness_ ? std::max(0.0, -curv.K[v]) : 0.0); };
-    for (int e = 0; e < topo.edgeCount(); ++e) {
-      const auto& ev = topo.edgeVertices(e);
-      const double h2 = 0.5 * (bend(ev[0]) + bend(ev[1]));
-      edgeScratch_[e] = std::max(geo.edgeWeight[e], 0.0) * h2;
-    }
-    rows_.solver->system.addEdgeLaplacian(topo, edgeScratch_, rows_.index, kCurvatureStiffness * tau);
-    const bool withBarrier = barrierStiffness && addBarrierStiffness(topo, geo, positions, activeFace, tau);
-    for (int v = 0; v < nv; ++v)
-      if (rows_.index[v] >= 0 && damping_[v] > 0) rows_.solver->system.scaleDiagonal(rows_.index[v], 1 + damping_[v]);
-    return withBarrier;
-  };
-  if (!retryPlain_) {
-    withBarrier_ = assemble(true);
-    saved_ = positions;
-    faceNormalBefore_ = geo.faceNormal;
-    normalBefore_ = geo.vertexNormal;
-  }
-  // The barrier's stiffness at a step far beyond the shape's time scale can make the matrix too
-  // ill-conditioned to factorise (pivots lost to rounding): the step is then solved without it.
-  if (!solve(bending_.gradient, tau) && !(withBarrier_ && (assemble(false), solve(bending_.gradient, tau)))) {
-    secant_.clear();
-    return false;
-  }
-
-  // The jump limit (jumpOvershoot): a longer step is shortened (every displacement by the same
-  // factor), which keeps it a descent direction.
-  const double overshoot = jumpOvershoot(state);
-  if (!std::isfinite(overshoot)) return lastStepAccelerated_ ? reject() : false;
-  lastStepShortened_ = overshoot > 1;
-  const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;
   held_.assign(nv, 0);
   for (int round = 0;; ++round) {
     for (int v = 0; v < nv; ++v)
@@ -272,14 +311,9 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     state.invalidate();
     const Geometry& moved = state.geometryOnly();
     culprits_.clear();
-    bool turned = false;
-    for (int f = 0; f < topo.faceCount(); ++f) {
-      if (!activeFace[f] || moved.faceNormal[f].dot(faceNormalBefore_[f]) >= 0) continue;
-      turned = true;
-      for (int v : topo.faces()[f]) culprits_.push_back(v);
-    }
+    const bool turned = addTurnedFaceCulprits(topo, activeFace, moved);
     const double after = turned ? before : bendingEnergy(topo, moved, positions, active, bending_);
-    if (!std::isfinite(after)) return reject();
+    if (!std::isfinite(after)) return false;
     const bool rose = after > before + kEnergySlack * std::abs(before);
     bool crossed = false;
     if (!turned && !rose) {
@@ -292,7 +326,7 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
           for (int v : topo.faces()[f]) culprits_.push_back(v), crossed = true;
       if (!crossed) {
         energyAfter_ = after;
-        break;
+        return true;
       }
     }
     lastStepHeldContact_ = lastStepHeldContact_ || crossed;
@@ -300,80 +334,102 @@ bool VectorIntegrator::tryStep(FlowState& state, double tau) {
     const int allowed = crossed ? kMaxContactCulprits : kMaxCulprits;
     if (round == kMaxHoldRounds || static_cast<int>(culprits_.size()) > allowed) {
       if (crossed) ++crossingRejections_, lastRejectionCrossed_ = true;
-      return reject();
+      return false;
     }
-    if (rose) {  // the vertices whose terms rose most, until they make up the rise
-      rises_.clear();
-      for (int v = 0; v < nv; ++v) {
-        const double rise = bending_.term[v] - termBefore_[v];
-        if (rise > 0) rises_.emplace_back(rise, v);
-      }
-      const int take = std::min<int>(kMaxCulprits + 1, static_cast<int>(rises_.size()));
-      std::partial_sort(rises_.begin(), rises_.begin() + take, rises_.end(), std::greater<>());
-      double covered = 0;
-      for (int k = 0; k < take && covered < after - before; ++k) covered += rises_[k].first, culprits_.push_back(rises_[k].second);
-      if (round == 0) overshot_ = culprits_;
-      if (covered < after - before || static_cast<int>(culprits_.size()) > kMaxCulprits) return reject();
-    }
-    bool more = false;
-    auto hold = [&](int v) {
-      if (rows_.index[v] >= 0 && !held_[v]) held_[v] = 1, more = true;
-    };
-    for (int c : culprits_) {
-      hold(c);
-      for (int k = topo.ringBegin(c); k < topo.ringEnd(c); ++k) hold(topo.ringVertex(k));
-    }
-    if (!more) return reject();
+    if (rose && !addRiseCulprits(nv, after - before, round)) return false;
+    if (!holdCulprits(topo)) return false;
   }
-  // A step the model of W's curvature made too short (W's Hessian is not the matrix): while W
-  // keeps falling, go on along the same direction, to kMaxExtrapolation times the step, within
-  // the jump limit. Each try costs an evaluation of W, no solve. On the elephant (genus 3) steps at
-  // τ ≫ T moved 0.15 ℓ each and lowered W by 0.03 each, for hundreds of steps.
-  bool anyHeld = false;
-  for (int v = 0; v < nv && !anyHeld; ++v) anyHeld = held_[v] != 0;
-  if (!anyHeld && !lastStepShortened_) {
-    double alpha = 1;
-    const double limit = std::min(kMaxExtrapolation, overshoot > 0 ? 1 / overshoot : kMaxExtrapolation);
-    while (2 * alpha <= limit) {
-      const double trial = 2 * alpha;
-      for (int v = 0; v < nv; ++v)
-        if (rows_.index[v] >= 0) positions[v] = saved_[v] + trial * delta_[v];
-      state.invalidate();
-      const Geometry& moved = state.geometryOnly();
-      bool turned = false;
-      for (int f = 0; f < topo.faceCount() && !turned; ++f)
-        turned = activeFace[f] && moved.faceNormal[f].dot(faceNormalBefore_[f]) < 0;
-      const double w = turned ? energyAfter_ : bendingEnergy(topo, moved, positions, active, bending_);
-      if (turned || !(w < energyAfter_)) break;
-      alpha = trial;
-      energyAfter_ = w;
-    }
-    for (int v = 0; v < nv; ++v)
-      if (rows_.index[v] >= 0) positions[v] = saved_[v] + alpha * delta_[v];
+}
+
+// A step the model of W's curvature made too short (W's Hessian is not the matrix): while W
+// keeps falling, go on along the same direction, to kMaxExtrapolation times the step, within
+// the jump limit. Each try costs an evaluation of W, no solve. On the elephant (genus 3) steps at
+// τ ≫ T moved 0.15 ℓ each and lowered W by 0.03 each, for hundreds of steps.
+void VectorIntegrator::extrapolate(FlowState& state, double overshoot, double scale) {
+  std::vector<Vec3>& positions = state.positions();
+  const Topology& topo = state.topology();
+  const std::vector<std::uint8_t>& active = state.roles().active;
+  const std::vector<std::uint8_t>& activeFace = state.roles().activeFace;
+  double alpha = 1;
+  const double limit = std::min(kMaxExtrapolation, overshoot > 0 ? 1 / overshoot : kMaxExtrapolation);
+  while (2 * alpha <= limit) {
+    const double trial = 2 * alpha;
+    moveAlongStep(positions, trial);
     state.invalidate();
-    if (alpha > 1 && guardEmbedding_ && crossing_.crosses(state.mesh(), activeFace)) {
-      alpha = 1;  // the step itself passed the guard
-      for (int v = 0; v < nv; ++v)
-        if (rows_.index[v] >= 0) positions[v] = saved_[v] + scale * delta_[v];
-      state.invalidate();
-      energyAfter_ = bendingEnergy(topo, state.geometryOnly(), positions, active, bending_);
-    }
-    lastExtrapolation_ = alpha;
+    const Geometry& moved = state.geometryOnly();
+    const bool turned = anyFaceTurned(topo, activeFace, moved);
+    const double w = turned ? energyAfter_ : bendingEnergy(topo, moved, positions, active, bending_);
+    if (turned || !(w < energyAfter_)) break;
+    alpha = trial;
+    energyAfter_ = w;
   }
+  moveAlongStep(positions, alpha);
+  state.invalidate();
+  if (alpha > 1 && guardEmbedding_ && crossing_.crosses(state.mesh(), activeFace)) {
+    alpha = 1;  // the step itself passed the guard
+    moveAlongStep(positions, scale);
+    state.invalidate();
+    energyAfter_ = bendingEnergy(topo, state.geometryOnly(), positions, active, bending_);
+  }
+  lastExtrapolation_ = alpha;
+}
+
+// An accepted step's record (its largest moves, W before it), the damping's update and the
+// sliding border's move.
+void VectorIntegrator::finishStep(FlowState& state) {
+  const std::vector<Vec3>& positions = state.positions();
   double largest = 0, largestNormal = 0;
-  for (int v = 0; v < nv; ++v) {
+  for (std::size_t v = 0; v < rows_.index.size(); ++v) {
     if (rows_.index[v] < 0) continue;
     const Vec3 d = positions[v] - saved_[v];
     largest = std::max(largest, d.norm());
     largestNormal = std::max(largestNormal, std::abs(d.dot(normalBefore_[v])));
   }
   if (overshot_.empty()) relaxDamping();
-  else dampOvershoot(topo);
-  energyBefore_ = before;
+  else dampOvershoot(state.topology());
+  energyBefore_ = startEnergy_;
   lastMove_ = largest;
   lastNormalMove_ = largestNormal;
   state.slideBoundary();
   pairPending_ = true;
+}
+
+bool VectorIntegrator::tryStep(FlowState& state, double tau) {
+  lastRejectionCrossed_ = false;
+  lastStepHeldContact_ = false;
+  lastExtrapolation_ = 1;
+  const Geometry& geo = state.geometryOnly();
+  buildRows(state);
+  // The plain retry of a refused accelerated step (`retryPlain_`) starts where the first try did:
+  // its gradient, W and matrix are the ones at hand.
+  if (!retryPlain_) evaluateStart(state, geo);
+  const int nv = state.topology().vertexCount();
+  const Curvature& curv = state.curvature();
+  if (static_cast<int>(damping_.size()) != nv) damping_.assign(nv, 0.0);  // a new mesh
+  overshot_.clear();
+  if (!retryPlain_) {
+    withBarrier_ = assembleMatrix(state, geo, curv, tau, true);
+    saved_ = state.positions();
+    faceNormalBefore_ = geo.faceNormal;
+    normalBefore_ = geo.vertexNormal;
+  }
+  // The barrier's stiffness at a step far beyond the shape's time scale can make the matrix too
+  // ill-conditioned to factorise (pivots lost to rounding): the step is then solved without it.
+  if (!solve(bending_.gradient, tau) &&
+      !(withBarrier_ && (assembleMatrix(state, geo, curv, tau, false), solve(bending_.gradient, tau)))) {
+    secant_.clear();
+    return false;
+  }
+  // The jump limit (jumpOvershoot): a longer step is shortened (every displacement by the same
+  // factor), which keeps it a descent direction.
+  const double overshoot = jumpOvershoot(state);
+  if (!std::isfinite(overshoot)) return lastStepAccelerated_ ? rejectAttempt(state, tau) : false;
+  lastStepShortened_ = overshoot > 1;
+  const double scale = lastStepShortened_ ? 1 / overshoot : 1.0;
+  if (!placeHeldStep(state, scale)) return rejectAttempt(state, tau);
+  const bool anyHeld = std::any_of(held_.begin(), held_.end(), [](std::uint8_t h) { return h != 0; });
+  if (!anyHeld && !lastStepShortened_) extrapolate(state, overshoot, scale);
+  finishStep(state);
   return true;
 }
 

@@ -100,6 +100,18 @@ class VectorIntegrator {
   void addSecantPair(const FlowState& state, const Eigen::MatrixXd& gradient);
   bool addBarrierStiffness(const Topology& topo, const Geometry& geo, const std::vector<Vec3>& p,
                            const std::vector<std::uint8_t>& activeFace, double tau);
+  // tryStep's parts, in the order it takes them.
+  void evaluateStart(FlowState& state, const Geometry& geo);
+  bool assembleMatrix(FlowState& state, const Geometry& geo, const Curvature& curv, double tau, bool barrierStiffness);
+  bool placeHeldStep(FlowState& state, double scale);
+  bool addTurnedFaceCulprits(const Topology& topo, const std::vector<std::uint8_t>& activeFace, const Geometry& moved);
+  bool anyFaceTurned(const Topology& topo, const std::vector<std::uint8_t>& activeFace, const Geometry& moved) const;
+  bool addRiseCulprits(int nv, double rise, int round);
+  bool holdCulprits(const Topology& topo);
+  void extrapolate(FlowState& state, double overshoot, double scale);
+  void moveAlongStep(std::vector<Vec3>& positions, double alpha) const;
+  void finishStep(FlowState& state);
+  bool rejectAttempt(FlowState& state, double tau);
 
   double energyBefore_ = 0, energyAfter_ = 0, lastMove_ = 0, lastNormalMove_ = 0, lastExtrapolation_ = 1;
   bool lastStepShortened_ = false, guardEmbedding_ = false, saddleStiffness_ = false, lastRejectionCrossed_ = false, lastStepHeldContact_ = false;
