@@ -3,6 +3,7 @@
 // curvature energy of a mesh.
 #include "commands.h"
 #include "flow_options.h"
+#include "mesh_command.h"
 #include "mesh_files.h"
 
 #include <elastica/app/choices.h>
@@ -46,13 +47,10 @@ void runCurvature(const CurvatureArgs& a) {
 
 void addCurvatureCommand(CLI::App& app) {
   auto args = std::make_shared<CurvatureArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "curvature",
+  CLI::App* cmd = addMeshCommand(app, "curvature", args->input, args->output,
       "Compute discrete mean curvature H, Gaussian curvature K and the total curvature energy\n"
       "E = sum (4H^2 - 2K) A_i. Writes per-vertex mean_curvature, gaussian_curvature,\n"
       "quality (= H, +1/r on a sphere with outward normals) and a colour ramp by H (in a .ply output).");
-  cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   addTableOptions(*cmd, app::FilterId::Curvature, args->given);
   cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->callback([args] { runCurvature(*args); });

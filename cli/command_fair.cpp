@@ -5,6 +5,7 @@
 #include "face_index_file.h"
 #include "flow_options.h"
 #include "flow_report.h"
+#include "mesh_command.h"
 #include "mesh_files.h"
 
 #include <elastica/app/choices.h>
@@ -105,25 +106,17 @@ void runFair(FairArgs& a) {
     if (!line->empty()) std::printf("%s\n", line->c_str());
   std::printf("wrote %s\n", a.output.c_str());
 
-  if (!a.report.empty()) {
-    nlohmann::json j = app::fairingReport(report, flow, inVertices, inFaces, &result);
-    j["input"]["file"] = a.input;
-    j["output"]["file"] = a.output;
-    writeJson(a.report, j);
-    std::printf("wrote %s\n", a.report.c_str());
-  }
+  if (!a.report.empty())
+    writeReport(a.report, app::fairingReport(report, flow, inVertices, inFaces, &result), a.input, a.output);
 }
 
 }  // namespace
 
 void addFairCommand(CLI::App& app) {
   auto args = std::make_shared<FairArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "fair",
+  CLI::App* cmd = addMeshCommand(app, "fair", args->input, args->output,
       "Fair a mesh with the discrete elastica flow F = -Lap H - 2H(H^2-K) (or a comparison flow),\n"
       "optionally coarse to fine. Writes H as quality (and colour with --color-by-mean-curvature) in a .ply output.");
-  cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   addTableOptions(*cmd, app::FilterId::Fairing, args->given);
   addFlowChecks(*cmd, app::FilterId::Fairing, args->given);
   cmd->add_option("--selected-faces", args->selectedFaces,

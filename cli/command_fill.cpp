@@ -5,6 +5,7 @@
 #include "commands.h"
 #include "flow_options.h"
 #include "flow_report.h"
+#include "mesh_command.h"
 #include "mesh_files.h"
 
 #include <elastica/app/choices.h>
@@ -110,28 +111,20 @@ void runFill(FillArgs& a) {
   else
     std::printf("wrote %s\n", a.output.c_str());
 
-  if (!a.report.empty()) {
-    json["input"]["file"] = a.input;
-    json["output"]["file"] = a.output;
-    writeJson(a.report, json);
-    std::printf("wrote %s\n", a.report.c_str());
-  }
+  if (!a.report.empty()) writeReport(a.report, std::move(json), a.input, a.output);
 }
 
 }  // namespace
 
 void addFillCommand(CLI::App& app) {
   auto args = std::make_shared<FillArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "fill",
+  CLI::App* cmd = addMeshCommand(app, "fill", args->input, args->output,
       "Fill the holes of a mesh with patches that continue its curvature (the paper's restoration):\n"
       "minimum-weight triangulation, refinement to the surrounding density, a bi-Laplace start, then\n"
       "the elastica flow (semi-implicit by default) with two rings around each hole fixed.\n"
       "Original vertices and faces are kept bit for bit; new faces are selected in the output. (A hole\n"
       "border that passes twice through one point, as two copies of a vertex, is split there and the\n"
       "copies merged where a patch joins their fans.)");
-  cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
   addTableOptions(*cmd, app::FilterId::FillHoles, args->given);
   addFlowChecks(*cmd, app::FilterId::FillHoles, args->given);
   cmd->add_option("--report", args->report, "write a JSON report (one entry per hole)");

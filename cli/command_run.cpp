@@ -4,6 +4,7 @@
 // numerics (both go through app/). Friendlier than meshlabserver: a parameter the script omits
 // takes its default, with a warning.
 #include "commands.h"
+#include "mesh_command.h"
 #include "mesh_files.h"
 #include "mlx_script.h"
 
@@ -158,14 +159,11 @@ void runScript(const RunArgs& a) {
 
 void addRunCommand(CLI::App& app) {
   auto args = std::make_shared<RunArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "run",
+  CLI::App* cmd = addMeshCommand(app, "run", args->input, args->output,
       "Run a MeshLab filter script (.mlx) that uses the Elastica filters ('Discrete Elastica Fairing',\n"
       "'Fill Holes with Discrete Elastica', 'Discrete Elastica Curvature'), as meshlabserver with the\n"
       "Elastica plugin would. Parameters the script omits take their defaults (with a warning).\n"
-      "Writes the mesh in the format of -o's extension.");
-  cmd->add_option("-i,--input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
+      "Writes the mesh in the format of -o's extension.", "-i,--input");
   cmd->add_option("-s,--script", args->script, "MeshLab filter script (.mlx)")->required();
   cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->callback([args] { runScript(*args); });

@@ -3,6 +3,7 @@
 // at its edge midpoints; no vertex moves). The step of `fair --subdivide` on its own, for
 // coarse-to-fine schedules a script drives stage by stage (bench/paper_figures.sh).
 #include "commands.h"
+#include "mesh_command.h"
 #include "mesh_files.h"
 
 #include <elastica/subdivision.h>
@@ -33,10 +34,8 @@ void runSubdivide(const SubdivideArgs& a) {
 
 void addSubdivideCommand(CLI::App& app) {
   auto args = std::make_shared<SubdivideArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "subdivide", "Linear 1-to-4 subdivision: split every triangle at its edge midpoints (no vertex moves).");
-  cmd->add_option("input", args->input, "input mesh (.ply, .off, .stl, .obj)")->required();
-  cmd->add_option("-o,--output", args->output, kOutputHelp)->required();
+  CLI::App* cmd = addMeshCommand(app, "subdivide", args->input, args->output,
+                                 "Linear 1-to-4 subdivision: split every triangle at its edge midpoints (no vertex moves).");
   cmd->add_option("--levels", args->levels, "number of 1-to-4 subdivisions")->capture_default_str()->check(CLI::Range(1, 6));
   cmd->add_flag("--ascii", args->ascii, kAsciiHelp);
   cmd->callback([args] { runSubdivide(*args); });

@@ -24,6 +24,13 @@ void writeJson(const std::string& path, const nlohmann::json& j) {
   });
 }
 
+void writeReport(const std::string& path, nlohmann::json j, const std::string& input, const std::string& output) {
+  j["input"]["file"] = input;
+  j["output"]["file"] = output;
+  writeJson(path, j);
+  std::printf("wrote %s\n", path.c_str());
+}
+
 std::function<bool(const FlowProgress&)> terminalProgress(const std::string& label, bool always) {
   const bool tty = isatty(STDERR_FILENO);
   return [tty, always, label](const FlowProgress& p) {

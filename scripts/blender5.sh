@@ -19,19 +19,8 @@
 # First run on the development machine (2 shared cores): see docs/blender.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-src=$PWD
-shot=
-if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
-[[ $# -eq 0 ]] || { sed -n '3,19p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
-[[ $(id -u) -eq 0 ]] || { echo "blender5: run as root (debootstrap and chroot)" >&2; exit 1; }
-t0=$SECONDS
-step() { printf '\n== blender5 [%4d s] %s\n' $((SECONDS - t0)) "$*"; }
-fail() { printf 'blender5: FAIL: %s\n' "$*" >&2; exit 1; }
-export DEBIAN_FRONTEND=noninteractive LC_ALL=C.UTF-8
-cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
-root=$cache/sid-root
-out=$cache/blender5
 source scripts/debian-root.sh
+root_script blender5 '3,19p' sid-root "$@"
 source scripts/sid-build.sh
 
 step "sid root ($root) and the Python module for its Blender"

@@ -2,6 +2,7 @@
 # A cached Debian root for the host scripts (scripts/meshlab2025.sh, scripts/blender5.sh): sourced, not run.
 #
 #   source scripts/debian-root.sh
+#   root_script NAME USAGE_LINES SUITE_ROOT "$@"   # the scripts' shared start (below)
 #   debian_root SUITE ROOT LOG_PREFIX PACKAGE...   # debootstrap (once), mounts, apt-get install (when the list changed)
 #   in_root CMD...                                  # CMD in the root, with a clean environment
 #   bind SOURCE TARGET [ro]                         # a bind mount, undone on exit
@@ -12,6 +13,28 @@
 # complete, and reused by later runs; $ROOT/.elastica-packages holds the installed package list.
 # A mirror's sid Release file may be past its Valid-Until date: apt in the root is told to accept it
 # (debootstrap itself does not check). On exit, processes left in the root are ended and mounts undone.
+
+# The start of every host script that sources this (blender5.sh, meshlab2022.sh, meshlab2025.sh), run
+# from the checkout's top: NAME, the sed range of its usage comment, the root's folder name in the
+# cache, then the script's own arguments ([--screenshot OUT] only). Checks for root and sets src, shot,
+# t0, cache, root, out=$cache/NAME, and step/fail, which print under NAME.
+root_script() {
+  _script_name=$1
+  local usage=$2 root_name=$3
+  shift 3
+  src=$PWD
+  shot=
+  if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
+  [[ $# -eq 0 ]] || { sed -n "$usage" "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+  [[ $(id -u) -eq 0 ]] || { echo "$_script_name: run as root (debootstrap and chroot)" >&2; exit 1; }
+  t0=$SECONDS
+  export DEBIAN_FRONTEND=noninteractive LC_ALL=C.UTF-8
+  cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
+  root=$cache/$root_name
+  out=$cache/$_script_name
+}
+step() { printf '\n== %s [%4d s] %s\n' "$_script_name" $((SECONDS - t0)) "$*"; }
+fail() { printf '%s: FAIL: %s\n' "$_script_name" "$*" >&2; exit 1; }
 
 # The Debian mirror the system's apt uses (the URI of its main suite).
 debian_mirror() {

@@ -28,20 +28,8 @@
 # Prints each step's time.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-src=$PWD
-shot=
-if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
-[[ $# -eq 0 ]] || { sed -n '3,28p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
-[[ $(id -u) -eq 0 ]] || { echo "meshlab2022: run as root (debootstrap and chroot)" >&2; exit 1; }
-
-t0=$SECONDS
-step() { printf '\n== meshlab2022 [%4d s] %s\n' $((SECONDS - t0)) "$*"; }
-fail() { printf 'meshlab2022: FAIL: %s\n' "$*" >&2; exit 1; }
-export DEBIAN_FRONTEND=noninteractive LC_ALL=C.UTF-8
-
-cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
-root=$cache/trixie-root
-out=$cache/meshlab2022
+source scripts/debian-root.sh
+root_script meshlab2022 '3,28p' trixie-root "$@"
 mltree=$(ls -d "$cache"/meshlab-trixie-src-2022.02*/ 2>/dev/null | tail -n1)
 [[ -n "$mltree" && -f "$mltree/.elastica-complete" ]] || fail "no MeshLab 2022.02 source tree in $cache (run scripts/setup.sh)"
 
@@ -54,8 +42,6 @@ root_packages=(meshlab lib3ds-1-3 libopenctm1 libxerces-c3.2t64 libmuparser2v5 l
   qtbase5-dev libqt5opengl5-dev libglew-dev
   libeigen3-dev libsuitesparse-dev libopenblas0-serial libtinyobjloader-dev nlohmann-json3-dev libcli11-dev libtinyxml2-dev
   xvfb xauth xdotool imagemagick)
-
-source scripts/debian-root.sh
 
 # ---------------------------------------------------------------- 1. the trixie root
 step "trixie root ($root)"

@@ -27,19 +27,8 @@
 # First run on the development machine (2 shared cores): see docs/meshlab.md. Exit 1 on any failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-src=$PWD
-shot=
-if [[ "${1:-}" == --screenshot ]]; then shot=$(realpath -m "${2:?--screenshot needs a file}"); shift 2; fi
-[[ $# -eq 0 ]] || { sed -n '3,27p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
-[[ $(id -u) -eq 0 ]] || { echo "meshlab2025: run as root (debootstrap and chroot)" >&2; exit 1; }
-t0=$SECONDS
-step() { printf '\n== meshlab2025 [%4d s] %s\n' $((SECONDS - t0)) "$*"; }
-fail() { printf 'meshlab2025: FAIL: %s\n' "$*" >&2; exit 1; }
-export DEBIAN_FRONTEND=noninteractive LC_ALL=C.UTF-8
-cache=${ELASTICA_CACHE_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/elastica}
-root=$cache/sid-root
-out=$cache/meshlab2025
 source scripts/debian-root.sh
+root_script meshlab2025 '3,27p' sid-root "$@"
 source scripts/sid-build.sh
 
 # ---------------------------------------------------------------- 1-2. root and build

@@ -79,6 +79,14 @@ void addNoise(TriMesh& m, const std::vector<int>& region, double sigma, Rng& rng
         for (int k = 0; k < 3; ++k) m.positions[v][k] += sigma * rng.normal();
 }
 
+// `m` with addNoise of a tenth of its mean edge on `region`, drawn from Rng(seed).
+TriMesh withNoise(const TriMesh& m, const std::vector<int>& region, std::uint64_t seed) {
+  TriMesh noisy = m;
+  Rng rng(seed);
+  addNoise(noisy, region, 0.1 * meanEdge(m), rng);
+  return noisy;
+}
+
 // Σ (4H² − 2K) A over the vertices of `faces` (interior regular ones), on the whole mesh.
 double regionEnergy(const TriMesh& m, const std::vector<int>& faces) {
   const Topology topo(m.vertexCount(), m.faces);
@@ -242,9 +250,7 @@ TEST(RegionFairing, RegionOfABigMeshKeepsTheRest) {
   }
   ASSERT_GT(cap.size(), 800u);
   ASSERT_LT(cap.size(), 1300u);
-  TriMesh noisy = sphere;
-  Rng rng(5);
-  addNoise(noisy, cap, 0.1 * meanEdge(sphere), rng);
+  const TriMesh noisy = withNoise(sphere, cap, 5);
   FlowOptions opt;
   opt.maxSteps = 300;
   // The run and its checks build no topology of the whole mesh (the piece has a few thousand vertices).
@@ -318,9 +324,7 @@ TEST_P(ScanRegionFairing, RegionAtTheOpenBorder) {
     if (topo.isBoundaryVertex(v)) border = v;
   ASSERT_GE(border, 0) << "both scans are open";
   const std::vector<int> region = regionAround(scan, scan.positions[border], 0.03);
-  Rng rng(11);
-  TriMesh noisy = scan;
-  addNoise(noisy, region, 0.1 * meanEdge(scan), rng);
+  const TriMesh noisy = withNoise(scan, region, 11);
   FlowOptions opt;
   opt.maxSteps = 200;
   expectRegionKept(noisy, region, opt, std::string(GetParam().mesh) + " border region");
@@ -356,9 +360,7 @@ TEST_P(ScanRegionFairing, RegionThroughAThinPart) {
   int facingAway = 0;
   const std::vector<int> region = thinPartRegion(scan, facingAway);
   EXPECT_GE(facingAway, static_cast<int>(region.size()) / 10) << "the region wraps round a thin part";
-  Rng rng(13);
-  TriMesh noisy = scan;
-  addNoise(noisy, region, 0.1 * meanEdge(scan), rng);
+  const TriMesh noisy = withNoise(scan, region, 13);
   FlowOptions limit;
   limit.maxSteps = 200;
   expectRegionKept(noisy, region, limit, std::string(GetParam().mesh) + " thin part");

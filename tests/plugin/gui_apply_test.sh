@@ -12,16 +12,9 @@
 #   gui_apply_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR DATA_DIR ARTEFACT_DIR ELASTICA_EXE
 set -euo pipefail
 prefix_script=$1 plugin=$2 prefix=$3 data=$4 artefacts=$5 elastica=$6
-source "$(dirname "$0")/gui_lib.sh"   # fail, wait_display, wait_window
-[[ -n "${DISPLAY:-}" ]] || fail "no X display (run under scripts/with-xvfb.sh)"
-for tool in xdotool import; do command -v $tool >/dev/null || fail "$tool not installed (scripts/setup.sh)"; done
-wait_display
-"$prefix_script" --prefix "$prefix" "$plugin" >/dev/null
-mkdir -p "$artefacts"
-home=$(mktemp -d)  # MeshLab writes its settings under $HOME
-meshlab_pid=
-cleanup() { [[ -n "$meshlab_pid" ]] && kill "$meshlab_pid" 2>/dev/null; rm -rf "$home"; }
-trap cleanup EXIT
+source "$(dirname "$0")/gui_lib.sh"   # fail, wait_window, gui_check_display, gui_install_plugin
+gui_check_display
+gui_install_plugin
 
 # Waits up to $2 seconds for a line matching $1 in file $3.
 wait_log() {

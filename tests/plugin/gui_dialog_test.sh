@@ -12,18 +12,11 @@
 #   gui_dialog_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR MESH ARTEFACT_DIR DIALOG_PROBE.so
 set -euo pipefail
 prefix_script=$1 plugin=$2 prefix=$3 mesh=$4 artefacts=$5 probe=$6
-source "$(dirname "$0")/gui_lib.sh"   # fail, wait_display, wait_window
-[[ -n "${DISPLAY:-}" ]] || fail "no X display (run under scripts/with-xvfb.sh)"
-for tool in xdotool import; do command -v $tool >/dev/null || fail "$tool not installed (scripts/setup.sh)"; done
-wait_display
+source "$(dirname "$0")/gui_lib.sh"   # fail, wait_window, gui_check_display, gui_install_plugin
+gui_check_display
 [[ -f $probe ]] || fail "no dialog probe at $probe"
 
-"$prefix_script" --prefix "$prefix" "$plugin" >/dev/null
-mkdir -p "$artefacts"
-home=$(mktemp -d)  # MeshLab writes its settings under $HOME
-meshlab_pid=
-cleanup() { [[ -n "$meshlab_pid" ]] && kill "$meshlab_pid" 2>/dev/null; rm -rf "$home"; }
-trap cleanup EXIT
+gui_install_plugin
 
 # check_dialog CASE TITLE PARAMETERS: opens the dialog TITLE, shows its help and asserts that the
 # description and the PARAMETERS help paragraphs are all shown in full.
