@@ -19,15 +19,16 @@
 # any test mesh has. The MeshLab plugin and the Python module are not in this build: they load into
 # unsanitized hosts (MeshLab's binaries and libmeshlab-common; /usr/bin/python3), which cannot
 # carry the ASan runtime.
-# -g1 (line tables only), for CI's 45 minutes: reports still name the function and file:line of
-# every frame, inlined ones too, and the code is the same as at -g (docs/decisions.md, "CI's time").
+# -g1 (line tables only) and a unity build (CMake's batches of 8 sources per unit, so the headers
+# (Eigen, vcglib, gtest) are compiled once per batch, not per file), for CI's 45 minutes: reports
+# still name the function and file:line of every frame, inlined ones too (docs/decisions.md, "CI's time").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 fuzz_seconds=${1:-60}
 start=$SECONDS
 
 echo "== sanitizers: ASan + UBSan build of the test suite (build-asan/)"
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -g1" \
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -g1" -DCMAKE_UNITY_BUILD=ON \
   -DELASTICA_BUILD_PLUGIN=OFF -DELASTICA_BUILD_BENCH=OFF -DELASTICA_BUILD_PYTHON=OFF -DCMAKE_DISABLE_FIND_PACKAGE_OpenMP=ON \
   -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=undefined,float-cast-overflow -fno-omit-frame-pointer" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null

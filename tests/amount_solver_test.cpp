@@ -5,6 +5,7 @@
 // factorisation (flow/spd_solver.h): on a noisy icosphere and a real scan the iterations reach
 // rounding in few steps and agree with the direct solve; on a scan with slivers they do not reach
 // the tolerance in the filter's budget, and say so (the filter then factorises).
+#include "exact_compare.h"
 #include "sample_meshes.h"
 #include "test_meshes.h"
 
@@ -57,11 +58,6 @@ void buildAmountSystem(const TriMesh& mesh, AmountSystem& out) {
   for (int v = 0; v < n; ++v) out.b.row(v) = (-0.5 * tau * geo.vertexArea[v]) * bilaplacian[v].transpose();
 }
 
-// The largest difference from the direct solution, relative to its largest entry.
-double relativeDifference(const Eigen::MatrixXd& x, const Eigen::MatrixXd& direct) {
-  return (x - direct).lpNorm<Eigen::Infinity>() / direct.lpNorm<Eigen::Infinity>();
-}
-
 Eigen::MatrixXd directSolve(const AmountSystem& s) {
   SpdSolver spd;
   EXPECT_TRUE(spd.factorize(s.system.matrix()));
@@ -94,7 +90,7 @@ void solveLikeTheFilter(const TriMesh& mesh, FilterRun& r) {
 // A converged run, equal to the direct solve to 1e-9 of its largest entry.
 void expectMatchesDirect(const FilterRun& r) {
   EXPECT_GE(r.iterations, 1);
-  EXPECT_LT(relativeDifference(r.x, directSolve(r.s)), 1e-9);
+  EXPECT_LT(test::relativeDifference(r.x, directSolve(r.s)), 1e-9);
 }
 
 }  // namespace

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The bi-Laplace start of a hole's patch (restoration/biharmonic_embedding): free vertices solve
 // (C M⁻¹ C) x = 0 with every other vertex fixed.
+#include "exact_compare.h"
 #include <elastica/shapes.h>
 #include "restoration/biharmonic_embedding.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -27,8 +27,6 @@ std::vector<std::uint8_t> centreBlock(const TriMesh& m) {
   }
   return free;
 }
-
-bool bitEqual(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(Vec3)) == 0; }
 
 }  // namespace
 
@@ -52,7 +50,7 @@ TEST(BiharmonicEmbedding, ReproducesAPlane) {
   solveBiharmonic(m, free);
   for (int v = 0; v < m.vertexCount(); ++v) {
     if (free[v]) EXPECT_NEAR(normal.dot(m.positions[v] - origin), 0, 1e-10) << "vertex " << v;
-    else EXPECT_TRUE(bitEqual(m.positions[v], before.positions[v])) << "vertex " << v;
+    else EXPECT_TRUE(test::bitEqual(m.positions[v], before.positions[v])) << "vertex " << v;
   }
 }
 

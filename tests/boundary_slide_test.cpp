@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Sliding boundaries (flow/boundary_slide, BoundaryMode::Slide): boundary vertices move along the
 // boundary polylines recorded at the start, towards even spacing; corners stay; nothing else moves.
+#include "exact_compare.h"
 #include <elastica/shapes.h>
 #include <elastica/topology.h>
 #include "flow/boundary_slide.h"
@@ -8,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -20,7 +20,6 @@ constexpr int kN = 8;  // an 8×8 grid of unit squares: the boundary is the squa
 
 bool onSide(const Vec3& p) { return p.x() == 0 || p.x() == kN || p.y() == 0 || p.y() == kN; }
 bool isCorner(const Vec3& p) { return (p.x() == 0 || p.x() == kN) && (p.y() == 0 || p.y() == kN); }
-bool bitEqual(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(Vec3)) == 0; }
 
 // Largest deviation from 1 of the distance between consecutive boundary vertices.
 double worstGap(const Topology& topo, const std::vector<Vec3>& p) {
@@ -69,7 +68,7 @@ TEST(BoundarySlide, EvensOutSpacingAlongTheSides) {
   for (std::size_t v = 0; v < p.size(); ++v) {
     const Vec3& p0 = grid.positions[v];
     if (!sliding[v] || isCorner(p0)) {
-      EXPECT_TRUE(bitEqual(p[v], start[v])) << "vertex " << v;
+      EXPECT_TRUE(test::bitEqual(p[v], start[v])) << "vertex " << v;
       continue;
     }
     if (p0.x() == 0 || p0.x() == kN) EXPECT_NEAR(p[v].x(), p0.x(), 1e-12) << v;
@@ -94,5 +93,5 @@ TEST(BoundarySlide, ProjectsOntoTheRecordedPolyline) {
   slider.slide(topo, p, sliding, 0.0);
   EXPECT_NEAR((p[v] - Vec3(3.25, 0, 0)).norm(), 0, 1e-12);
   for (int w = 0; w < grid.vertexCount(); ++w)
-    if (w != v) { EXPECT_TRUE(bitEqual(p[w], grid.positions[w])) << w; }
+    if (w != v) { EXPECT_TRUE(test::bitEqual(p[w], grid.positions[w])) << w; }
 }

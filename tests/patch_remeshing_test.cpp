@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Isotropic remeshing of a hole's patch (mesh/patch_remeshing, Botsch & Kobbelt 2004):
 // only the patch's own vertices and faces change; slivers go.
+#include "exact_compare.h"
 #include "hole_patches.h"
 #include "test_meshes.h"
 
@@ -16,7 +17,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <random>
 #include <utility>
 #include <vector>
@@ -24,8 +24,6 @@
 using namespace elastica;
 
 namespace {
-
-bool bitEqual(const Vec3& a, const Vec3& b) { return std::memcmp(a.data(), b.data(), sizeof(Vec3)) == 0; }
 
 // Remeshes `h`'s patch toward `sigma` and checks what remeshPatch promises whatever the shape: the
 // vertices before firstNew bit for bit, every face outside the patch at its index with its value,
@@ -39,7 +37,7 @@ std::pair<double, double> remeshAndCheck(test::PatchedHole& h, std::vector<doubl
   const TriMesh& after = h.mesh;
   EXPECT_GE(after.vertexCount(), h.firstNew);
   for (int v = 0; v < h.firstNew && v < after.vertexCount(); ++v)
-    EXPECT_TRUE(bitEqual(after.positions[v], before.positions[v])) << "vertex " << v;
+    EXPECT_TRUE(test::bitEqual(after.positions[v], before.positions[v])) << "vertex " << v;
   EXPECT_EQ(h.patchFace.size(), after.faces.size());
   EXPECT_EQ(sigma.size(), after.positions.size());
   for (int f = 0; f < before.faceCount() && f < after.faceCount(); ++f) {
@@ -188,11 +186,11 @@ TEST(PatchRemeshing, ARegionMayShrinkPastTheFacesAroundItKeepingTheirOrder) {
   EXPECT_LT(movingOf(shrunk), movingBefore / 5);
   const std::vector<Vec3> fixedBefore = input.fixedPositions(), fixedAfter = shrunk.fixedPositions();
   ASSERT_EQ(fixedAfter.size(), fixedBefore.size());
-  for (std::size_t k = 0; k < fixedBefore.size(); ++k) EXPECT_TRUE(bitEqual(fixedAfter[k], fixedBefore[k])) << k;
+  for (std::size_t k = 0; k < fixedBefore.size(); ++k) EXPECT_TRUE(test::bitEqual(fixedAfter[k], fixedBefore[k])) << k;
   const auto outsideBefore = input.outsideFaces(), outsideAfter = shrunk.outsideFaces();
   ASSERT_EQ(outsideAfter.size(), outsideBefore.size());
   for (std::size_t k = 0; k < outsideBefore.size(); ++k)
-    for (int c = 0; c < 3; ++c) EXPECT_TRUE(bitEqual(outsideAfter[k][c], outsideBefore[k][c])) << k;
+    for (int c = 0; c < 3; ++c) EXPECT_TRUE(test::bitEqual(outsideAfter[k][c], outsideBefore[k][c])) << k;
   EXPECT_EQ(shrunk.region.size(), shrunk.mesh.faces.size());
   const Topology t0(input.mesh.vertexCount(), input.mesh.faces), t1(shrunk.mesh.vertexCount(), shrunk.mesh.faces);
   EXPECT_EQ(t1.inconsistentEdgeCount(), 0);
@@ -207,5 +205,5 @@ TEST(PatchRemeshing, ARegionMayShrinkPastTheFacesAroundItKeepingTheirOrder) {
   EXPECT_EQ(fineShrinking.region, fine.region);
   ASSERT_EQ(fineShrinking.mesh.vertexCount(), fine.mesh.vertexCount());
   for (int v = 0; v < fine.mesh.vertexCount(); ++v)
-    EXPECT_TRUE(bitEqual(fineShrinking.mesh.positions[v], fine.mesh.positions[v])) << v;
+    EXPECT_TRUE(test::bitEqual(fineShrinking.mesh.positions[v], fine.mesh.positions[v])) << v;
 }

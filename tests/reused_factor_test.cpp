@@ -4,6 +4,7 @@
 // fresh direct factorisation of the same system, on a real scan: the earlier factorisation is of
 // the matrix at half the step and of the mesh before a step's move and the edge flips after it
 // (another sparsity pattern).
+#include "exact_compare.h"
 #include "sample_meshes.h"
 
 #include "flow/semi_implicit_system.h"
@@ -58,10 +59,6 @@ int moveAndFlip(TriMesh& mesh, double edge) {
   return flipToDelaunay(mesh, std::vector<std::uint8_t>(mesh.vertexCount(), 1));
 }
 
-double relativeDifference(const Eigen::MatrixXd& x, const Eigen::MatrixXd& direct) {
-  return (x - direct).lpNorm<Eigen::Infinity>() / direct.lpNorm<Eigen::Infinity>();
-}
-
 }  // namespace
 
 // lion-head (8,356 vertices, its edges flipped to Delaunay as a flow keeps them), τ = 100 ℓ⁴ and
@@ -97,13 +94,13 @@ TEST(ReusedFactor, PreconditionsTheNextStepAcrossAMoveAndEdgeFlips) {
     const int iterations =
         reused.solvePreconditioned(A1, b, x, SpdSolver::kPcgTolerance, SpdSolver::kMaxIterations);
     EXPECT_GE(iterations, 1) << steps;
-    EXPECT_LT(relativeDifference(x, direct), 1e-3) << steps << " ℓ⁴, " << iterations << " iterations";
+    EXPECT_LT(test::relativeDifference(x, direct), 1e-3) << steps << " ℓ⁴, " << iterations << " iterations";
 
     // The path the integrators take: the pattern changed, the held factorisation is tried first.
     reused.patternChanged();
     ASSERT_TRUE(reused.solveStep(A1, b, x, 0));
-    EXPECT_LT(relativeDifference(x, direct), 1e-3) << steps;
+    EXPECT_LT(test::relativeDifference(x, direct), 1e-3) << steps;
     ASSERT_TRUE(reused.solveStep(A1, b, x, 0));
-    EXPECT_LT(relativeDifference(x, direct), 1e-3) << steps;
+    EXPECT_LT(test::relativeDifference(x, direct), 1e-3) << steps;
   }
 }

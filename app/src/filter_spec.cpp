@@ -332,7 +332,8 @@ FilterSpec curvature() {
   return s;
 }
 
-std::string number(double x) {
+// A value or bound in a range error, to 9 digits (filter_run.cpp's number() has a format argument).
+std::string boundText(double x) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", x);
   return buf;
@@ -421,15 +422,16 @@ void checkValue(const ParamSpec& p, double x, Caller face) {
   if (p.type == ParamType::Enum) {
     const int n = static_cast<int>(p.enumValues.size());
     if (x == std::floor(x) && x >= 0 && x < n) return;
-    throw InvalidInputError(p.describe(face) + ": enum value " + number(x) + " is not in 0.." + std::to_string(n - 1));
+    throw InvalidInputError(p.describe(face) + ": enum value " + boundText(x) + " is not in 0.." + std::to_string(n - 1));
   }
   if (p.type == ParamType::AbsPerc && x == kAutoFeatureSize) return;  // "auto", every face's default
   const double lo = p.minValue, hi = p.maxValue;
   if ((p.minExclusive ? x > lo : x >= lo) && x <= hi) return;  // NaN fails both
-  std::string range = hi < kUnbounded ? "in " + number(lo) + ".." + number(hi) : (p.minExclusive ? "> " : ">= ") + number(lo);
+  std::string range =
+      hi < kUnbounded ? "in " + boundText(lo) + ".." + boundText(hi) : (p.minExclusive ? "> " : ">= ") + boundText(lo);
   if (p.type == ParamType::AbsPerc) range += " (a length in the mesh's units; -1: auto)";
   if (!p.rangeHint.empty()) range += " (" + p.rangeHint + ")";
-  throw InvalidInputError(p.describe(face) + " must be " + range + ", not " + number(x));
+  throw InvalidInputError(p.describe(face) + " must be " + range + ", not " + boundText(x));
 }
 
 JobOptions readJob(const FilterSpec& spec, const ParamValues& v, Caller face) {

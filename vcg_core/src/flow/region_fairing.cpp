@@ -329,7 +329,7 @@ constexpr long long kSecondRunAttempts = 2;
 constexpr long long kLidProbeAttempts = 20, kSemiFirstAttempts = 25 * kLidProbeAttempts;
 
 // One run of fairResolved from the input: its mesh, selection, report and resolution.
-struct RegionRun {
+struct ResolvedRun {
   TriMesh mesh;
   std::vector<std::uint8_t> selection;
   FlowReport report;
@@ -341,17 +341,17 @@ struct RegionRun {
 bool saysFinal(StopReason stop) { return stop == StopReason::Converged || stop == StopReason::SelfContact; }
 
 // A run fairResolved may call final (a resolved region and a final stop): it beats one that is not.
-bool isFinal(const RegionRun& r) { return saysFinal(r.report.stop) && r.resolution.resolved(); }
+bool isFinal(const ResolvedRun& r) { return saysFinal(r.report.stop) && r.resolution.resolved(); }
 
 // A semi-implicit run before the vector run that makes the whole vector run unneeded
 // (kSemiFirstAttempts): converged and resolved; a stop pressed against itself is not enough.
-bool sparesVectorRun(const RegionRun& r) { return r.report.stop == StopReason::Converged && r.resolution.resolved(); }
+bool sparesVectorRun(const ResolvedRun& r) { return r.report.stop == StopReason::Converged && r.resolution.resolved(); }
 
 // fairGuarded from `mesh` and `selection` (copied) with `opt`. A semi-implicit run that diverges
 // counts as unchanged (the vector scheme's result stands); the vector scheme's divergence is the
 // caller's FlowDivergedError, as a run of fairGuarded alone.
-RegionRun runFrom(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
-  RegionRun run{mesh, selection, {}, {}, true};
+ResolvedRun runFrom(const TriMesh& mesh, const std::vector<std::uint8_t>& selection, const FlowOptions& opt) {
+  ResolvedRun run{mesh, selection, {}, {}, true};
   try {
     run.report = fairGuarded(run.mesh, run.selection, opt);
   } catch (const FlowDivergedError&) {
@@ -389,7 +389,7 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
     return o;
   };
   auto canRun = [&](const FlowOptions& o) { return o.maxSteps > 0 && (!(opt.maxSeconds > 0) || o.maxSeconds > 0); };
-  RegionRun probe, vector, semi;
+  ResolvedRun probe, vector, semi;
   // Only where the user's step limit leaves the probe and the semi-implicit run room beside the
   // whole vector run: under a tighter one they would take the attempts it needs.
   if (opt.maxSteps > 4 * (kLidProbeAttempts + kSemiFirstAttempts)) {
@@ -424,7 +424,7 @@ FlowReport fairResolved(TriMesh& mesh, std::vector<std::uint8_t>& selection, con
                          (isFinal(semi) != isFinal(vector) ? isFinal(semi)
                                                            : semi.resolution.resolvedEnergy() < vector.resolution.resolvedEnergy()));
   // Neither changed the region nor the vector scheme ran (the user's time limit): the probe's result.
-  RegionRun& chosen = takeSemi ? semi : vector.ran ? vector : probe.ran ? probe : semi;
+  ResolvedRun& chosen = takeSemi ? semi : vector.ran ? vector : probe.ran ? probe : semi;
   const bool probeCameBack = &chosen == &probe;
   const int runs = int(probe.ran || vector.ran) + int(semi.ran);  // the schemes that ran
   mesh = std::move(chosen.mesh);
