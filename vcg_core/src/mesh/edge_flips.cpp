@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/topology.h>
 #include "mesh/edge_flips.h"
+#include "mesh/edge_key.h"
 #include "operators/corner_angle.h"
 
 #include <algorithm>
@@ -28,12 +29,6 @@ bool clearlyDelaunay(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d)
   return cosC * sinD + cosD * sinC > 1e-9 * (std::abs(cosC) * sinD + std::abs(cosD) * sinC);
 }
 
-// An undirected edge's key (not subdivision.cpp's edgeKey: the names stay apart in a unity build).
-std::uint64_t flipEdgeKey(int a, int b) {
-  const auto [lo, hi] = std::minmax(a, b);
-  return (static_cast<std::uint64_t>(lo) << 32) | static_cast<std::uint32_t>(hi);
-}
-
 // The faces on each edge as the flips leave them: the adjacency of the mesh as given (the caller's
 // Topology where it is the mesh's, else one built here), and beside it the edges whose faces a
 // flip changed ({-1, -1}: flipped away).
@@ -47,7 +42,7 @@ class LiveEdges {
 
   // The faces on edge (a, b), in no order; {-1, -1} if there is no such edge, {f, -1} on a border.
   std::array<int, 2> faces(int a, int b) const {
-    const auto it = changed_.find(flipEdgeKey(a, b));
+    const auto it = changed_.find(edgeKey(a, b));
     if (it != changed_.end()) return it->second;
     for (int k = topo_->ringBegin(a); k < topo_->ringEnd(a); ++k) {
       if (topo_->ringVertex(k) != b) continue;
@@ -63,12 +58,12 @@ class LiveEdges {
     auto move = [&](int u, int v, int from, int to) {
       std::array<int, 2> f = faces(u, v);
       for (int& x : f) x = x == from ? to : x;
-      changed_[flipEdgeKey(u, v)] = f;
+      changed_[edgeKey(u, v)] = f;
     };
     move(b, c, f0, f1);  // (b, c) leaves f0 for f1, (a, d) leaves f1 for f0
     move(a, d, f1, f0);
-    changed_[flipEdgeKey(a, b)] = {-1, -1};
-    changed_[flipEdgeKey(c, d)] = {f0, f1};
+    changed_[edgeKey(a, b)] = {-1, -1};
+    changed_[edgeKey(c, d)] = {f0, f1};
   }
 
  private:
@@ -123,7 +118,7 @@ int flipPasses(TriMesh& mesh, const FlipFilter& allowed, int maxPasses, const To
       // Edges this pass created count as existing too: two quads can share their far corners (on
       // a thin tube, c and d are both neighbours of a, b and of a', b'), and the second flip would
       // make c–d an edge of four faces.
-      if (live.exists(c, d) || removed.count(flipEdgeKey(c, d))) {
+      if (live.exists(c, d) || removed.count(edgeKey(c, d))) {
         stopped.emplace_back(lo, hi);
         continue;
       }
@@ -134,7 +129,7 @@ int flipPasses(TriMesh& mesh, const FlipFilter& allowed, int maxPasses, const To
       mesh.faces[f0] = {a, d, c};
       mesh.faces[f1] = {d, b, c};
       live.flip(a, b, c, d, f0, f1);
-      removed.insert(flipEdgeKey(a, b));
+      removed.insert(edgeKey(a, b));
       touched[f0] = touched[f1] = 1;
       touchedFaces.push_back(f0);
       touchedFaces.push_back(f1);

@@ -2,6 +2,7 @@
 #include <elastica/errors.h>
 #include <elastica/subdivision.h>
 #include <elastica/topology.h>
+#include "mesh/edge_key.h"
 
 #include <algorithm>
 #include <string>
@@ -10,11 +11,6 @@
 
 namespace elastica {
 namespace {
-
-std::uint64_t edgeKey(int a, int b) {
-  const auto [lo, hi] = std::minmax(a, b);
-  return (std::uint64_t(std::uint32_t(lo)) << 32) | std::uint32_t(hi);
-}
 
 // The midpoint vertex of each edge, appended to the mesh on first use.
 class Midpoints {
