@@ -24,8 +24,11 @@ targets=("$@")
 ((${#targets[@]})) || targets=(fuzz_read_ply fuzz_read_off fuzz_read_stl fuzz_read_obj fuzz_flow)
 build=build-fuzz
 
+# Line tables only and a unity build (as the sanitizer build, scripts/ci-extra.sh): a report still
+# names every frame's function and file:line:column, inlined frames too (docs/decisions.md, "CI's time").
 if [[ ! -f $build/CMakeCache.txt ]]; then
   CC=clang CXX=clang++ cmake -S . -B $build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DELASTICA_BUILD_FUZZERS=ON \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" -DCMAKE_UNITY_BUILD=ON \
     -DELASTICA_BUILD_PLUGIN=OFF -DELASTICA_BUILD_CLI=OFF -DELASTICA_BUILD_TESTS=OFF -DELASTICA_BUILD_BENCH=OFF -DELASTICA_BUILD_PYTHON=OFF >/dev/null
 fi
 cmake --build $build -j"$(nproc)" --target "${targets[@]}" >/dev/null
