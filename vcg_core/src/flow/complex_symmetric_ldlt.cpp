@@ -1,7 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/complex_symmetric_ldlt.h"
 
+#include "flow/flush_subnormals.h"
+
 #include <Eigen/OrderingMethods>
+#ifdef ELASTICA_HAVE_CHOLMOD
+#include <cholmod.h>
+#endif
+
+#include <algorithm>
+#include <utility>
 
 #include <cmath>
 
@@ -23,6 +31,73 @@ inline Complex productCsl(const Complex& a, const Complex& b) {
   return Complex(a.real() * b.real() - a.imag() * b.imag(), a.real() * b.imag() + a.imag() * b.real());
 }
 
+// Eigen's AMD on A's pattern (values unused; it symmetrises A + Aᵀ, a no-op here): the rows in
+// the order they are eliminated.
+std::vector<int> amdOrderingCsl(const ComplexSymmetricLdlt::Matrix& A) {
+  const int n = static_cast<int>(A.rows());
+  Eigen::SparseMatrix<double> pattern(n, n);
+  pattern.resizeNonZeros(A.nonZeros());
+  std::copy(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, pattern.outerIndexPtr());
+  std::copy(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), pattern.innerIndexPtr());
+  std::fill(pattern.valuePtr(), pattern.valuePtr() + A.nonZeros(), 1.0);
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> eliminated;
+  Eigen::AMDOrdering<int>()(pattern, eliminated);  // eliminated[k]: the row taken k-th
+  return std::vector<int>(eliminated.indices().data(), eliminated.indices().data() + n);
+}
+
+#ifdef ELASTICA_HAVE_CHOLMOD
+// METIS's nested dissection (through CHOLMOD, postordered) on A's upper triangle's pattern; empty
+// if it failed. On a mesh's one-ring pattern it gave less fill than AMD from about 10⁵ rows
+// (docs/decisions.md, "The amount's solver").
+std::vector<int> metisOrderingCsl(const ComplexSymmetricLdlt::Matrix& A) {
+  const int n = static_cast<int>(A.rows());
+  cholmod_common common;
+  cholmod_start(&common);
+  cholmod_sparse view{};
+  view.nrow = view.ncol = static_cast<std::size_t>(n);
+  view.nzmax = static_cast<std::size_t>(A.nonZeros());
+  view.p = const_cast<int*>(A.outerIndexPtr());
+  view.i = const_cast<int*>(A.innerIndexPtr());
+  view.stype = 1;  // the upper triangle (both are stored)
+  view.itype = CHOLMOD_INT;
+  view.xtype = CHOLMOD_PATTERN;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = 1;
+  view.packed = 1;
+  std::vector<int> order(n);
+  const int ok = cholmod_metis(&view, nullptr, 0, 1, order.data(), &common);
+  cholmod_finish(&common);
+  if (!ok) order.clear();
+  return order;
+}
+#endif
+
+// Elimination tree and column counts of A ordered by `order` (Davis's ldl_symbolic): row k of L
+// reaches, from each entry i < k of A's row k, up the tree to the first node already marked for
+// k. Returns the nonzeros of L below the diagonal.
+std::int64_t symbolicCsl(const ComplexSymmetricLdlt::Matrix& A, const std::vector<int>& order,
+                         std::vector<int>& parent, std::vector<int>& count) {
+  const int n = static_cast<int>(A.rows());
+  std::vector<int> position(n), flag(n);
+  for (int k = 0; k < n; ++k) position[order[k]] = k;
+  parent.assign(n, -1);
+  count.assign(n, 0);
+  std::int64_t fill = 0;
+  for (int k = 0; k < n; ++k) {
+    flag[k] = k;
+    const int col = order[k];
+    for (int p = A.outerIndexPtr()[col]; p < A.outerIndexPtr()[col + 1]; ++p) {
+      for (int i = position[A.innerIndexPtr()[p]]; i < k && flag[i] != k; i = parent[i]) {
+        if (parent[i] == -1) parent[i] = k;
+        ++count[i];
+        ++fill;
+        flag[i] = k;
+      }
+    }
+  }
+  return fill;
+}
+
 }  // namespace
 
 void ComplexSymmetricLdlt::clear() {
@@ -32,47 +107,40 @@ void ComplexSymmetricLdlt::clear() {
 void ComplexSymmetricLdlt::analyzePattern(const Matrix& A) {
   const int n = static_cast<int>(A.rows());
   factored_ = false;
-  // Eigen's AMD on the pattern (values unused; it symmetrises A + Aᵀ, a no-op here).
-  Eigen::SparseMatrix<double> pattern(n, n);
-  pattern.resizeNonZeros(A.nonZeros());
-  std::copy(A.outerIndexPtr(), A.outerIndexPtr() + n + 1, pattern.outerIndexPtr());
-  std::copy(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros(), pattern.innerIndexPtr());
-  std::fill(pattern.valuePtr(), pattern.valuePtr() + A.nonZeros(), 1.0);
-  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> eliminated;
-  Eigen::AMDOrdering<int>()(pattern, eliminated);  // eliminated[k]: the row taken k-th
-  Eigen::SparseMatrix<double>().swap(pattern);
-  order_.assign(eliminated.indices().data(), eliminated.indices().data() + n);
-  position_.assign(n, 0);
-  for (int k = 0; k < n; ++k) position_[order_[k]] = k;
-  // Elimination tree and column counts (Davis's ldl_symbolic): row k of L reaches, from each
-  // entry i < k of A's row k, up the tree to the first node already marked for k.
-  parent_.assign(n, -1);
-  std::vector<int> flag(n), count(n, 0);
-  for (int k = 0; k < n; ++k) {
-    flag[k] = k;
-    const int col = order_[k];
-    for (int p = A.outerIndexPtr()[col]; p < A.outerIndexPtr()[col + 1]; ++p) {
-      for (int i = position_[A.innerIndexPtr()[p]]; i < k && flag[i] != k; i = parent_[i]) {
-        if (parent_[i] == -1) parent_[i] = k;
-        ++count[i];
-        flag[i] = k;
-      }
-    }
-  }
-  columnStart_.assign(n + 1, 0);
-  multiplyAdds_ = 0;
-  for (int k = 0; k < n; ++k) {
-    columnStart_[k + 1] = columnStart_[k] + count[k];
-    multiplyAdds_ += static_cast<double>(count[k]) * count[k];
-  }
   std::vector<int>().swap(rowIndex_);
   std::vector<Complex>().swap(value_);
+  // The ordering of less fill of Eigen's AMD and (with CHOLMOD) METIS's nested dissection; METIS
+  // first, AMD where it is not smaller. Both are deterministic.
+  std::vector<int> parent, count;
+  bool have = false;
+  std::int64_t best = 0;
+  auto consider = [&](std::vector<int>&& order) {
+    const std::int64_t fill = symbolicCsl(A, order, parent, count);
+    if (have && fill >= best) return;
+    have = true, best = fill;
+    order_ = std::move(order);
+    parent_.swap(parent);
+    columnStart_.assign(n + 1, 0);
+    multiplyAdds_ = 0;
+    for (int k = 0; k < n; ++k) {
+      columnStart_[k + 1] = columnStart_[k] + count[k];
+      multiplyAdds_ += static_cast<double>(count[k]) * count[k];
+    }
+  };
+#ifdef ELASTICA_HAVE_CHOLMOD
+  std::vector<int> metis = metisOrderingCsl(A);
+  if (!metis.empty()) consider(std::move(metis));
+#endif
+  consider(amdOrderingCsl(A));
+  position_.assign(n, 0);
+  for (int k = 0; k < n; ++k) position_[order_[k]] = k;
 }
 
 bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
   const int n = static_cast<int>(A.rows());
   if (columnStart_.size() != static_cast<std::size_t>(n) + 1) analyzePattern(A);
   factored_ = false;
+  [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
   rowIndex_.resize(columnStart_.back());
   value_.resize(columnStart_.back());
   diagonal_.resize(n);  // holds 1/D
@@ -117,6 +185,7 @@ bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
 
 void ComplexSymmetricLdlt::solve(const Eigen::VectorXcd& b, Eigen::VectorXcd& x) const {
   const int n = static_cast<int>(order_.size());
+  [[maybe_unused]] FlushSubnormals flush;
   Eigen::VectorXcd y(n);
   for (int k = 0; k < n; ++k) y[k] = b[order_[k]];
   for (int j = 0; j < n; ++j) {  // L y = Pb
