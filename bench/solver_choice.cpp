@@ -318,13 +318,9 @@ Row oneRingComplex(const Problem& p) {
   r.factorise = since(t);
   ComplexSymmetricLdlt::Matrix().swap(B);
   t = Clock::now();
-  r.x.resize(p.b.rows(), 3);
-  Eigen::VectorXcd column;
-  for (int col = 0; col < 3; ++col) {
-    column = p.b.col(col).cast<Complex>();
-    ldlt.solve(column, column);
-    r.x.col(col) = column.real();
-  }
+  Eigen::MatrixXcd x = p.b.cast<Complex>();
+  ldlt.solve(x, x);
+  r.x = x.real();
   r.solve = since(t);
   return r;
 }

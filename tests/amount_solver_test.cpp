@@ -93,14 +93,9 @@ Eigen::MatrixXd directSolve(const AmountSystem& s) {
 Eigen::MatrixXd oneRingSolve(const AmountSystem& s) {
   ComplexSymmetricLdlt ldlt;
   EXPECT_TRUE(ldlt.factorize(s.oneRing));
-  Eigen::MatrixXd x(s.b.rows(), s.b.cols());
-  Eigen::VectorXcd column;
-  for (Eigen::Index c = 0; c < s.b.cols(); ++c) {
-    column = s.b.col(c).cast<ComplexSymmetricLdlt::Complex>();
-    ldlt.solve(column, column);
-    x.col(c) = column.real();
-  }
-  return x;
+  Eigen::MatrixXcd x = s.b.cast<ComplexSymmetricLdlt::Complex>();
+  ldlt.solve(x, x);
+  return x.real();
 }
 
 // The worst column's ‖A x − b‖ / ‖b‖ with the two-ring matrix A.

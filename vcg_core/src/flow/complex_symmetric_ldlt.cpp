@@ -9,6 +9,7 @@
 #endif
 
 #include <algorithm>
+#include <cstddef>
 #include <utility>
 
 #include <cmath>
@@ -124,7 +125,7 @@ void ComplexSymmetricLdlt::analyzePattern(const Matrix& A) {
     multiplyAdds_ = 0;
     for (int k = 0; k < n; ++k) {
       columnStart_[k + 1] = columnStart_[k] + count[k];
-      multiplyAdds_ += static_cast<double>(count[k]) * count[k];
+      multiplyAdds_ += 0.5 * static_cast<double>(count[k]) * (count[k] + 1);
     }
   };
 #ifdef ELASTICA_HAVE_CHOLMOD
@@ -183,23 +184,32 @@ bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
   return true;
 }
 
-void ComplexSymmetricLdlt::solve(const Eigen::VectorXcd& b, Eigen::VectorXcd& x) const {
+void ComplexSymmetricLdlt::solve(const Eigen::MatrixXcd& B, Eigen::MatrixXcd& X) const {
   const int n = static_cast<int>(order_.size());
+  const int m = static_cast<int>(B.cols());
   [[maybe_unused]] FlushSubnormals flush;
-  Eigen::VectorXcd y(n);
-  for (int k = 0; k < n; ++k) y[k] = b[order_[k]];
+  // The columns side by side per row: one pass over the factor for all of them (each column's
+  // arithmetic is the same as alone).
+  Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y(n, m);
+  for (int k = 0; k < n; ++k) y.row(k) = B.row(order_[k]);
+  Complex* row = y.data();
   for (int j = 0; j < n; ++j) {  // L y = Pb
-    const Complex yj = y[j];
-    for (std::int64_t p = columnStart_[j]; p < columnStart_[j + 1]; ++p) subtractProductCsl(y[rowIndex_[p]], value_[p], yj);
+    for (std::int64_t p = columnStart_[j]; p < columnStart_[j + 1]; ++p) {
+      Complex* target = row + static_cast<std::ptrdiff_t>(rowIndex_[p]) * m;
+      for (int c = 0; c < m; ++c) subtractProductCsl(target[c], value_[p], row[static_cast<std::ptrdiff_t>(j) * m + c]);
+    }
   }
-  for (int j = 0; j < n; ++j) y[j] = productCsl(y[j], diagonal_[j]);  // D
+  for (int j = 0; j < n; ++j)  // D
+    for (int c = 0; c < m; ++c) y(j, c) = productCsl(y(j, c), diagonal_[j]);
   for (int j = n - 1; j >= 0; --j) {  // Lᵀ (no conjugation)
-    Complex s = y[j];
-    for (std::int64_t p = columnStart_[j]; p < columnStart_[j + 1]; ++p) subtractProductCsl(s, value_[p], y[rowIndex_[p]]);
-    y[j] = s;
+    Complex* out = row + static_cast<std::ptrdiff_t>(j) * m;
+    for (std::int64_t p = columnStart_[j]; p < columnStart_[j + 1]; ++p) {
+      const Complex* source = row + static_cast<std::ptrdiff_t>(rowIndex_[p]) * m;
+      for (int c = 0; c < m; ++c) subtractProductCsl(out[c], value_[p], source[c]);
+    }
   }
-  x.resize(n);
-  for (int k = 0; k < n; ++k) x[order_[k]] = y[k];
+  X.resize(n, m);
+  for (int k = 0; k < n; ++k) X.row(order_[k]) = y.row(k);
 }
 
 }  // namespace elastica

@@ -28,12 +28,14 @@ class ComplexSymmetricLdlt {
   void analyzePattern(const Matrix& A);
   /// The numeric factorisation of `A` (the analysed pattern). False on a zero or non-finite pivot.
   bool factorize(const Matrix& A);
-  /// Solves A x = b with the last successful factorisation (b and x may be the same vector).
-  void solve(const Eigen::VectorXcd& b, Eigen::VectorXcd& x) const;
+  /// Solves A X = B for the columns of B with the last successful factorisation, one pass over
+  /// the factor for all of them (B and X may be the same matrix).
+  void solve(const Eigen::MatrixXcd& B, Eigen::MatrixXcd& X) const;
 
   /// Nonzeros of L below the diagonal (after analyzePattern).
   std::int64_t factorNonZeros() const { return columnStart_.empty() ? 0 : columnStart_.back(); }
-  /// Complex multiply-adds of the numeric factorisation (after analyzePattern): Σ_k nnz(L_k)².
+  /// Complex multiply-adds of the numeric factorisation (after analyzePattern): Σ_j c_j (c_j + 1) / 2,
+  /// c_j the nonzeros of L's column j below the diagonal.
   double multiplyAdds() const { return multiplyAdds_; }
   bool factored() const { return factored_; }
   /// Frees the factor and its workspace.

@@ -18,7 +18,8 @@
 namespace elastica {
 namespace {
 
-// From this many rows on, the steps are solved by conjugate gradients preconditioned with an
+// Where the one-ring form does not apply (fixed or sliding vertices beside the free ones), from
+// this many rows on, the steps are solved by conjugate gradients preconditioned with an
 // incomplete Cholesky factorisation (flow/incomplete_cholesky_cg.h) until a solve misses the
 // tolerance within kIncompleteIterations (slivers), and by a direct factorisation from then on.
 // Below, the factorisation costs little, and small meshes keep its bits. The tolerance is the
@@ -110,18 +111,17 @@ struct PrincipalPartFilter::Solver {
       if (incomplete->solve(b, displacement, kIncompleteTolerance, kIncompleteIterations) >= 0) return true;
       if (!factorize()) return false;
     }
+    if (complexForm.factored()) {  // A⁻¹ b = Re[(M + i s C)⁻¹ b] for real b (DESIGN.md §5)
+      Eigen::MatrixXcd x = b.cast<ComplexSymmetricLdlt::Complex>();
+      complexForm.solve(x, x);
+      displacement = x.real();
+      return displacement.allFinite();
+    }
     displacement.resize(b.rows(), b.cols());
     Eigen::VectorXd column, delta;
-    Eigen::VectorXcd complexColumn;
     for (Eigen::Index c = 0; c < b.cols(); ++c) {  // one column at a time, as before the iterations
       column = b.col(c);
-      if (complexForm.factored()) {  // A⁻¹ b = Re[(M + i s C)⁻¹ b] for real b (DESIGN.md §5)
-        complexColumn = column.cast<ComplexSymmetricLdlt::Complex>();
-        complexForm.solve(complexColumn, complexColumn);
-        delta = complexColumn.real();
-      } else {
-        spd.solve(column, delta);
-      }
+      spd.solve(column, delta);
       if (!delta.allFinite()) return false;
       displacement.col(c) = delta;
     }
@@ -147,8 +147,12 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau) {
   solver_->rows = rows;
   const bool oneRing = oneRingApplies(roles.active, freeIndex_, vertexArea_);
   if (oneRing) solver_->oneRing = assembleOneRingForm(topo, edgeWeight_, vertexArea_, freeIndex_, rows, std::sqrt(0.5 * tau));
-  const bool incomplete = rows >= kIncompleteFromRows;
-  if (incomplete || !oneRing) {  // the two-ring matrix, only where it is used
+  // Where the one-ring form applies it is factorised at once: the incomplete factor's attempt
+  // cost as much as it saved on a well-shaped sphere and a third of the run on a scan with
+  // slivers, where it gives up (docs/decisions.md, "The amount's solver"). The two-ring matrix
+  // is assembled only where it is used.
+  const bool incomplete = rows >= kIncompleteFromRows && !oneRing;
+  if (!oneRing) {
     SemiImplicitSystem system;  // its products' slots go once the matrix is assembled
     system.assembleMatrix(topo, edgeWeight_, vertexArea_, roles.active, freeIndex_, rows, 1.0, 0.5 * tau);
     solver_->matrix = system.takeMatrix();
