@@ -147,10 +147,10 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau) {
   solver_->rows = rows;
   const bool oneRing = oneRingApplies(roles.active, freeIndex_, vertexArea_);
   if (oneRing) solver_->oneRing = assembleOneRingForm(topo, edgeWeight_, vertexArea_, freeIndex_, rows, std::sqrt(0.5 * tau));
-  // Where the one-ring form applies it is factorised at once: the incomplete factor's attempt
-  // cost as much as it saved on a well-shaped sphere and a third of the run on a scan with
-  // slivers, where it gives up (docs/decisions.md, "The amount's solver"). The two-ring matrix
-  // is assembled only where it is used.
+  // Where the one-ring form applies it is factorised at once: at the default amount the
+  // incomplete factor's iterations gave up on both scale benchmarks (a noisy sphere and a scan),
+  // after costing up to a third of the run (docs/decisions.md, "The amount's solver"). The
+  // two-ring matrix is assembled only where it is used.
   const bool incomplete = rows >= kIncompleteFromRows && !oneRing;
   if (!oneRing) {
     SemiImplicitSystem system;  // its products' slots go once the matrix is assembled
