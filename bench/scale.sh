@@ -97,12 +97,12 @@ if ((choices)); then
   echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
   for name in sphere elephant; do
     [[ -z $only || $only == "$name" ]] || continue
-    for o in two-ring-simplicial two-ring-amd two-ring-supernodal block-simplicial one-ring-pcg incomplete-pcg; do
+    for o in two-ring-simplicial two-ring-amd two-ring-supernodal block-simplicial one-ring-pcg incomplete-pcg one-ring-complex; do
       "$bin/solver_choice" "$tmp/$name.ply" "$o" || echo "| $o | failed |"
     done
   done
   echo "(mannequin-devil, slivers:)"
-  for o in two-ring-simplicial one-ring-pcg incomplete-pcg; do
+  for o in two-ring-simplicial one-ring-pcg incomplete-pcg one-ring-complex; do
     "$bin/solver_choice" "$samples/mannequin-devil.off" "$o" 2>&1 || echo "| $o | failed |"
   done
 fi

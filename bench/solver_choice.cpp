@@ -14,11 +14,13 @@
 // gradients on the two-ring operator preconditioned by B⁻¹ M B⁻¹, B = M + sK one-ring, CHOLMOD
 // simplicial LLᵀ), one-ring-pcg-supernodal, and incomplete-pcg / incomplete-natural-pcg
 // (conjugate gradients on the two-ring matrix preconditioned by Eigen's incomplete Cholesky on
-// its pattern, AMD or the vertices' order: flow/incomplete_cholesky_cg.h's choice). τ is the default amount's step (kFeatureSteps = 4
+// its pattern, AMD or the vertices' order: flow/incomplete_cholesky_cg.h's choice), and
+// one-ring-complex (the complex symmetric one-ring form M + i s K, our LDLᵀ: the filter's choice). τ is the default amount's step (kFeatureSteps = 4
 // of the flow time 2 ln 100 (F/2π)⁴, F = --feature-edges × the lower quartile of the edges).
 // Prints one Markdown row: rows, fill (nonzeros of the factor), its flops (CHOLMOD's count), analyse / factorise / one solve of
 // three columns (s), PCG iterations, relative residual ‖Ax − b‖/‖b‖ (the worst column), peak MB.
 #include "guarded_main.h"
+#include "flow/complex_symmetric_ldlt.h"
 #include "flow/semi_implicit_system.h"
 
 #include <elastica/geometry.h>
@@ -296,6 +298,33 @@ Row incomplete(const Problem& p) {
   return r;
 }
 
+// The one-ring complex symmetric form (DESIGN.md §5): A⁻¹ b = Re[(M + i s K)⁻¹ b] for real b, factored
+// by our LDLᵀ (flow/complex_symmetric_ldlt.h: Eigen's AMD, Davis's up-looking LDL in complex
+// arithmetic). fill counts the diagonal, as CHOLMOD's lnz does; flops are 8 real per complex
+// multiply-add of the factorisation.
+Row oneRingComplex(const Problem& p) {
+  using Complex = ComplexSymmetricLdlt::Complex;
+  Row r;
+  auto t = Clock::now();
+  ComplexSymmetricLdlt::Matrix B = Sparse(p.m.asDiagonal()).cast<Complex>() + Complex(0, p.s) * p.K.cast<Complex>();
+  B.makeCompressed();
+  ComplexSymmetricLdlt ldlt;
+  ldlt.analyzePattern(B);
+  r.analyse = since(t);
+  r.fill = static_cast<long>(ldlt.factorNonZeros()) + p.topo.vertexCount();
+  r.flops = 8 * ldlt.multiplyAdds();
+  t = Clock::now();
+  if (!ldlt.factorize(B)) std::fprintf(stderr, "one-ring-complex: zero or non-finite pivot\n");
+  r.factorise = since(t);
+  ComplexSymmetricLdlt::Matrix().swap(B);
+  t = Clock::now();
+  Eigen::MatrixXcd x = p.b.cast<Complex>();
+  ldlt.solve(x, x);
+  r.x = x.real();
+  r.solve = since(t);
+  return r;
+}
+
 }  // namespace
 
 int run(int argc, char** argv) {
@@ -322,6 +351,7 @@ int run(int argc, char** argv) {
   else if (option == "block-simplicial") r = block(p);
   else if (option == "incomplete-pcg") r = incomplete<Eigen::AMDOrdering<int>>(p);
   else if (option == "incomplete-natural-pcg") r = incomplete<Eigen::NaturalOrdering<int>>(p);
+  else if (option == "one-ring-complex") r = oneRingComplex(p);
   else if (option == "one-ring-pcg") r = oneRingPcg<Simplicial>(p);
   else if (option == "one-ring-pcg-supernodal") r = oneRingPcg<Supernodal>(p);
   else {

@@ -6,9 +6,13 @@
 // bumps smaller than F to go and the shapes larger than F to stay, so the run takes the principal
 // part alone, with the mesh's operators as it came:
 //   (M + τ/2 · C M⁻¹ C) δ = −τ/2 · C M⁻¹ C X,   C the cotangent matrix, M the mixed vertex areas,
-// factorised once and solved for each step (x, y and z); from 20,000 rows the steps are first
-// solved by conjugate gradients with its incomplete Cholesky factor (flow/incomplete_cholesky_cg.h),
-// which a matrix this close to its diagonal needs few of, and factorised only where they fall behind. Over the amount's time a sphere of
+// factorised once and solved for each step (x, y and z). Where every active vertex is free (a whole
+// closed mesh) the matrix is not assembled: A⁻¹ b = Re[(M + i s C)⁻¹ b], s² = τ/2, exactly, and
+// the complex symmetric one-ring matrix is factorised instead (flow/complex_symmetric_ldlt.h), with
+// a quarter to a third of the two-ring factor's fill. Elsewhere (fixed or sliding vertices), from
+// 20,000 rows the steps are first solved by conjugate gradients with the two-ring matrix's incomplete
+// Cholesky factor (flow/incomplete_cholesky_cg.h), and it is factorised only where they fall
+// behind. Over the amount's time a sphere of
 // radius R shrinks by 4 ln(100) R (F / 2πR)⁴: 1.4e-6 R when F is 3 % of its bounding-box diagonal.
 // Why not the full flow: on a scan with 3-D vertex noise the nonlinear terms read the noise as
 // curvature of order 1/ℓ, and the vector scheme's steps had to untangle the mesh first; the result

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/spd_solver.h"
 #include "flow/conjugate_gradients.h"
+#include "flow/flush_subnormals.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -12,9 +13,6 @@
 #endif
 #ifdef _OPENMP
 #include <omp.h>
-#endif
-#if defined(__SSE__)
-#include <xmmintrin.h>
 #endif
 
 
@@ -34,23 +32,6 @@ class OneThreadForCholmod {
 
  private:
   int levels_;
-#endif
-};
-
-// A matrix close to its diagonal (M + τ/2 · C M⁻¹ C at a small τ: a fairing amount's filter)
-// has Cholesky fill entries that decay geometrically with the distance in the mesh, down into
-// subnormal numbers, on which the CPU's arithmetic is about a hundred times slower. Subnormal
-// results are flushed to zero (and subnormal inputs read as zero) while this is alive; no value
-// that matters to a solve is below 1e-308. The previous setting is put back after.
-class FlushSubnormals {
- public:
-#if defined(__SSE__)
-  FlushSubnormals() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | kFlushToZero | kDenormalsAreZero); }
-  ~FlushSubnormals() { _mm_setcsr(saved_); }
-
- private:
-  static constexpr unsigned kFlushToZero = 0x8000, kDenormalsAreZero = 0x0040;
-  unsigned saved_;
 #endif
 };
 
