@@ -44,8 +44,8 @@ inline constexpr double kRoughResult = 0.1;
 /// (the CAD part joint: 6.6) keep cotangents, which know the slivers' shape.
 inline constexpr double kGraphMaxEdgeRatio = 4;
 /// The Graph amount in mean edge lengths: kGraphEdges + kGraphEdgesPerRoughness · (ρ − kCleanRoughness).
-inline constexpr double kGraphEdges = 1.5;
-inline constexpr double kGraphEdgesPerRoughness = 8;
+inline constexpr double kGraphEdges = 1.6;
+inline constexpr double kGraphEdgesPerRoughness = 7.5;
 
 /// The default amount of a mesh's faces, with the operators it runs with and the roughness it
 /// was sized from.
