@@ -12,26 +12,28 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <exception>
+
+#include "guarded_main.h"
 
 using namespace elastica;
 
-int main(int argc, char** argv) {
+namespace {
+
+int fairWithOperators(int argc, char** argv) {
   if (argc != 5) {
     std::fprintf(stderr, "usage: amount_operators IN OUT EDGES cotangent|graph\n");
     return 2;
   }
-  try {
-    TriMesh m = io::readMesh(argv[1]).mesh;
-    FlowOptions opt;
-    opt.featureSize = std::atof(argv[3]) * app::meanFaceEdge(m, nullptr);
-    opt.amountOperators = std::strcmp(argv[4], "graph") == 0 ? AmountOperators::Graph : AmountOperators::Cotangent;
-    const FlowReport r = fair(m, opt);
-    io::writePly(argv[2], m, {}, true);
-    std::printf("{\"energy_before\": %.9g, \"energy_after\": %.9g}\n", r.energyInitial, r.energyFinal);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "amount_operators: %s\n", e.what());
-    return 1;
-  }
+  TriMesh m = io::readMesh(argv[1]).mesh;
+  FlowOptions opt;
+  opt.featureSize = std::atof(argv[3]) * app::meanFaceEdge(m, nullptr);
+  opt.amountOperators = std::strcmp(argv[4], "graph") == 0 ? AmountOperators::Graph : AmountOperators::Cotangent;
+  const FlowReport r = fair(m, opt);
+  io::writePly(argv[2], m, {}, true);
+  std::printf("{\"energy_before\": %.9g, \"energy_after\": %.9g}\n", r.energyInitial, r.energyFinal);
   return 0;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return bench::guardedMain("amount_operators", fairWithOperators, argc, argv); }

@@ -8,6 +8,7 @@ and noise level (bench/add_noise: 3-D, uniform in a ball of NOISE x the mean edg
 the roughness elastica measures and the distance to the clean scan (bench/mesh_distance: the mean
 of both RMS, / the diagonal) for each amount; the best in bold. One run each. /usr/bin/python3."""
 import argparse
+import itertools
 import os
 import json
 import subprocess
@@ -16,11 +17,11 @@ import tempfile
 
 
 def main():
+    here = os.path.dirname(os.path.abspath(__file__))
     ap = argparse.ArgumentParser()
-    ap.add_argument("--build", default=os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build"))
-    ap.add_argument("--noise", default="0.1 0.3 0.5")
-    ap.add_argument("--edges", default="1 1.5 2 2.5 3")
-    ap.add_argument("--operators", default="graph")
+    for flag, default in (("--build", os.path.join(here, "..", "build")), ("--noise", "0.1 0.3 0.5"),
+                          ("--edges", "1 1.5 2 2.5 3"), ("--operators", "graph")):
+        ap.add_argument(flag, default=default)
     ap.add_argument("meshes", nargs="+")
     a = ap.parse_args()
     sys.path.insert(0, os.path.join(a.build, "python"))
@@ -31,26 +32,23 @@ def main():
     edges = a.edges.split()
     print(f"| scan | noise | roughness | " + " | ".join(f"{e} mean edges" for e in edges) + " |")
     print("|---|---:|---:|" + "---:|" * len(edges))
-    for mesh in a.meshes:
+    for mesh, noise in itertools.product(a.meshes, a.noise.split()):
         name = os.path.splitext(os.path.basename(mesh))[0]
-        for noise in a.noise.split():
-            src = mesh
-            if float(noise) > 0:
-                src = os.path.join(tmp, f"{name}-{noise}.ply")
-                subprocess.run([os.path.join(bin_, "add_noise"), mesh, src, noise, "1"], check=True)
-            V, F = elastica.read(src)
-            rough = elastica.surface_roughness(V, F)
-            d = []
-            for e in edges:
-                out = os.path.join(tmp, "out.ply")
-                subprocess.run([os.path.join(bin_, "amount_operators"), src, out, e, a.operators], check=True,
-                               capture_output=True)
-                j = json.loads(subprocess.run([os.path.join(bin_, "mesh_distance"), out, mesh], check=True,
-                                              capture_output=True, text=True).stdout)
-                d.append((j["a_to_b"]["rms_per_diagonal"] + j["b_to_a"]["rms_per_diagonal"]) / 2)
-            cells = [f"**{x:.3e}**" if x == min(d) else f"{x:.3e}" for x in d]
-            print(f"| {name} | {noise} | {rough:.4f} | " + " | ".join(cells) + " |", flush=True)
-
+        src = mesh if float(noise) == 0 else os.path.join(tmp, f"{name}-{noise}.ply")
+        if src != mesh:
+            subprocess.run([os.path.join(bin_, "add_noise"), mesh, src, noise, "1"], check=True)
+        V, F = elastica.read(src)
+        rough = elastica.surface_roughness(V, F)
+        d = []
+        for e in edges:
+            out = os.path.join(tmp, "out.ply")
+            subprocess.run([os.path.join(bin_, "amount_operators"), src, out, e, a.operators], check=True,
+                           capture_output=True)
+            j = json.loads(subprocess.run([os.path.join(bin_, "mesh_distance"), out, mesh], check=True,
+                                          capture_output=True, text=True).stdout)
+            d.append((j["a_to_b"]["rms_per_diagonal"] + j["b_to_a"]["rms_per_diagonal"]) / 2)
+        cells = [f"**{x:.3e}**" if x == min(d) else f"{x:.3e}" for x in d]
+        print(f"| {name} | {noise} | {rough:.4f} | " + " | ".join(cells) + " |", flush=True)
 
 if __name__ == "__main__":
     main()
