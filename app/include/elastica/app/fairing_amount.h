@@ -9,6 +9,9 @@
 // the value printed is the value used. The edge quantile, not the mean: the amount runs one flow
 // time for the whole mesh, and a scan finer where its detail is lost that detail to an amount
 // sized from the mean. The roughness (surfaceRoughness) raises it where the surface is noisy.
+// A rough scan without long slivers (amountOperatorsFor) is faired with uniform operators
+// (AmountOperators::Graph) instead of its noisy cotangents, by graphAmountEdges(roughness) MEAN
+// edges: uniform operators know no finer triangles, so the quantile would only shrink the amount.
 // Measurements: docs/options.md, "The default amount".
 #pragma once
 
