@@ -11,7 +11,8 @@
 // sized from the mean. The roughness (surfaceRoughness) raises it where the surface is noisy.
 // A rough scan without long slivers (amountOperatorsFor) is faired with uniform operators
 // (AmountOperators::Graph) instead of its noisy cotangents, by graphAmountEdges(roughness) MEAN
-// edges: uniform operators know no finer triangles, so the quantile would only shrink the amount.
+// edges: with one area scale their Laplacian reads a finer region's edges as the mean edge, so
+// they smooth each region by that many of its own edges (no fine feature gets the coarse amount).
 // Measurements: docs/options.md, "The default amount".
 #pragma once
 
