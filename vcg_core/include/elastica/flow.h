@@ -142,8 +142,9 @@ struct FlowOptions {
   /// t = 2 ln(100) (featureSize/2π)⁴, in which ripples of that wavelength lose 99 % of their height, then stop with
   /// StopReason::FeatureSize (docs/options.md). Elastica and Laplacian-of-H flows. Default 0.
   double featureSize = 0;
-  /// The operators of featureSize's filter; default the mesh's cotangents. The faces' default
-  /// amount (app/fairing_amount.h) chooses Graph for a rough scan. Not an option of any face.
+  /// The operators of featureSize's filter; default the mesh's cotangents. Not an option of any
+  /// face: every face's run (app's runFairing) sets it from the mesh, Graph for a rough scan
+  /// (app/fairing_amount.h), whatever the amount.
   AmountOperators amountOperators = AmountOperators::Cotangent;
 
   /// Step limit over all stages; default none (the largest count; every face shows it as 0).
