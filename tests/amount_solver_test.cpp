@@ -7,10 +7,12 @@
 // the tolerance in the filter's budget, and say so (the filter then factorises). The filter's
 // direct solve on a whole closed mesh is the one-ring complex form, A⁻¹ b = Re[(M + i s C)⁻¹ b]
 // (flow/complex_symmetric_ldlt.h): it equals the two-ring direct solve, slivers included.
+// Also: the uniform operators a rough scan's amount uses are an equilateral mesh's cotangents.
 #include "exact_compare.h"
 #include "sample_meshes.h"
 #include "test_meshes.h"
 
+#include "flow/amount_operators.h"
 #include "flow/complex_symmetric_ldlt.h"
 #include "flow/flow_state.h"
 #include "flow/incomplete_cholesky_cg.h"
@@ -238,4 +240,34 @@ TEST(AmountSolver, FilterOnAClosedMeshMatchesTheTwoRingSteps) {
   }
   EXPECT_GT(moved, 0.01 * geo.meanEdgeLength);
   EXPECT_LT(worst, 1e-10 * radius);
+}
+
+// AmountOperators::Graph (flow/amount_operators.h) is an equilateral mesh's own cotangent
+// operators: on a flat lattice of equilateral triangles of edge 0.7 (the mean edge exactly) every
+// weight, inner and boundary, and every inner vertex's mixed area agree to rounding.
+TEST(AmountSolver, GraphOperatorsAreAnEquilateralLatticesCotangents) {
+  const int n = 8;
+  const double h = 0.7;
+  TriMesh lattice;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) lattice.positions.emplace_back(h * (i + 0.5 * j), h * std::sqrt(3.0) / 2 * j, 0.0);
+  auto at = [&](int i, int j) { return j * (n + 1) + i; };
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      lattice.faces.push_back({at(i, j), at(i + 1, j), at(i, j + 1)});
+      lattice.faces.push_back({at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  const Topology topo(lattice.vertexCount(), lattice.faces);
+  const Geometry geo = computeGeometry(topo, lattice.positions);
+  std::vector<double> weight, area;
+  graphAmountOperators(topo, lattice.positions, weight, area);
+  ASSERT_EQ(weight.size(), geo.edgeWeight.size());
+  for (int e = 0; e < topo.edgeCount(); ++e) EXPECT_NEAR(weight[e], geo.edgeWeight[e], 1e-12) << e;
+  int inner = 0;
+  for (int v = 0; v < topo.vertexCount(); ++v) {
+    if (topo.isBoundaryVertex(v)) continue;
+    EXPECT_NEAR(area[v], geo.vertexArea[v], 1e-12) << v;
+    ++inner;
+  }
+  EXPECT_EQ(inner, (n - 1) * (n - 1));
 }

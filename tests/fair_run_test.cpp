@@ -92,7 +92,8 @@ TEST(FairRun, RegionRunRefusesWhatAWholeRunRefuses) {
 
 // The default amount's roughness (fairing_amount.h): a sphere's curvature cancels (a clean
 // icosphere reads as smooth as a clean scan), radial vertex noise does not; the clean sphere keeps
-// two 25 %-quantile edges, the noisy one gets more, each rounded to the 6 digits that print.
+// two 25 %-quantile edges and the cotangents, the noisy one the uniform operators and
+// graphAmountEdges(ρ) mean edges (more than two quantile edges), each rounded to the 6 digits that print.
 TEST(FairingAmount, RoughnessSeesNoiseNotCurvature) {
   TriMesh sphere = shapes::icosphere(1.0, 4);
   std::vector<double> lengths;
@@ -103,14 +104,29 @@ TEST(FairingAmount, RoughnessSeesNoiseNotCurvature) {
   const double clean = surfaceRoughness(sphere, nullptr);
   EXPECT_LT(clean, 0.02);
   EXPECT_EQ(autoFeatureSize(sphere, nullptr), roundedAmount(2 * q25));
+  EXPECT_EQ(autoAmount(sphere, nullptr).operators, AmountOperators::Cotangent);
   TriMesh noisy = sphere;
   shapes::addRadialNoise(noisy, 0.3 * meanFaceEdge(sphere, nullptr), 3);
   const double rough = surfaceRoughness(noisy, nullptr);
   EXPECT_GT(rough, kCleanRoughness);
   EXPECT_GT(autoFeatureSize(noisy, nullptr), 2 * q25);
+  const AutoAmount noisyAmount = autoAmount(noisy, nullptr);
+  EXPECT_EQ(noisyAmount.operators, AmountOperators::Graph);
+  EXPECT_EQ(noisyAmount.featureSize, roundedAmount(graphAmountEdges(rough) * meanFaceEdge(noisy, nullptr)));
   EXPECT_EQ(exactDecimal(roundedAmount(0.123456789)), "0.123457");
   EXPECT_EQ(std::stod(exactDecimal(0.1 / 3)), 0.1 / 3);
   std::printf("roughness: clean icosphere %.4f, radial noise of 0.3 edge %.4f\n", clean, rough);
+}
+
+// The uniform operators' gates: rough (above kCleanRoughness) and no long slivers (mean edge at
+// most kGraphMaxEdgeRatio quantile edges; the CAD part joint's 6.6 keeps the cotangents).
+TEST(FairingAmount, UniformOperatorsOnlyForARoughEvenMesh) {
+  EXPECT_EQ(amountOperatorsFor(0.15, 1.2, 1.0), AmountOperators::Graph);
+  EXPECT_EQ(amountOperatorsFor(0.15, 4.0, 1.0), AmountOperators::Graph);
+  EXPECT_EQ(amountOperatorsFor(0.15, 6.6, 1.0), AmountOperators::Cotangent);
+  EXPECT_EQ(amountOperatorsFor(kCleanRoughness, 1.2, 1.0), AmountOperators::Cotangent);
+  EXPECT_EQ(amountOperatorsFor(0.05, 1.2, 1.0), AmountOperators::Cotangent);
+  EXPECT_LT(graphAmountEdges(0.15), graphAmountEdges(0.48));  // grows with the roughness
 }
 
 }  // namespace

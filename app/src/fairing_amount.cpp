@@ -59,11 +59,29 @@ std::vector<T> neighbourMean(const TriMesh& mesh, const FaceSet* region, const s
 
 }  // namespace
 
-double autoFeatureSize(std::vector<double>& edgeLengths, double roughness) {
-  if (edgeLengths.empty()) return 0;
+AutoAmount autoAmount(std::vector<double>& edgeLengths, double roughness) {
+  AutoAmount a;
+  a.roughness = roughness;
+  if (edgeLengths.empty()) return a;
+  double sum = 0;
+  for (double l : edgeLengths) sum += l;
+  const double mean = sum / double(edgeLengths.size());
   const auto k = static_cast<std::ptrdiff_t>(std::floor(kAutoEdgeQuantile * double(edgeLengths.size() - 1)));
   std::nth_element(edgeLengths.begin(), edgeLengths.begin() + k, edgeLengths.end());
-  return roundedAmount(amountEdges(roughness) * edgeLengths[static_cast<std::size_t>(k)]);
+  const double quantile = edgeLengths[static_cast<std::size_t>(k)];
+  a.operators = amountOperatorsFor(roughness, mean, quantile);
+  a.featureSize = roundedAmount(a.operators == AmountOperators::Graph ? graphAmountEdges(roughness) * mean
+                                                                      : amountEdges(roughness) * quantile);
+  return a;
+}
+
+double graphAmountEdges(double roughness) {
+  return kGraphEdges + kGraphEdgesPerRoughness * std::max(roughness - kCleanRoughness, 0.0);
+}
+
+AmountOperators amountOperatorsFor(double roughness, double meanEdge, double quantileEdge) {
+  const bool rough = roughness > kCleanRoughness;
+  return rough && meanEdge <= kGraphMaxEdgeRatio * quantileEdge ? AmountOperators::Graph : AmountOperators::Cotangent;
 }
 
 double amountEdges(double roughness) {
@@ -98,12 +116,14 @@ double surfaceRoughness(const TriMesh& mesh, const FaceSet* region) {
   return edge > 0 ? median(rough) / edge : 0;
 }
 
-double autoFeatureSize(const TriMesh& mesh, const FaceSet* region) {
+AutoAmount autoAmount(const TriMesh& mesh, const FaceSet* region) {
   std::vector<double> lengths;
   lengths.reserve(3 * static_cast<std::size_t>(region ? region->faces.size() : mesh.faces.size()));
   forEachFaceEdge(mesh, region, [&](double l) { lengths.push_back(l); });
-  return autoFeatureSize(lengths, surfaceRoughness(mesh, region));
+  return autoAmount(lengths, surfaceRoughness(mesh, region));
 }
+
+double autoFeatureSize(const TriMesh& mesh, const FaceSet* region) { return autoAmount(mesh, region).featureSize; }
 
 double roundedAmount(double x) {
   char text[32];

@@ -274,7 +274,8 @@ void logAmount(FairingResult& r, const FlowOptions& opt, bool selected) {
   const int h = r.amount.halvings;
   r.amountLine = "fairing amount: feature size " + exactDecimal(r.amount.featureSize) + " (" +
                  number(100 * r.amount.perDiagonal, "%.3g") + " % of the bounding-box diagonal, " +
-                 number(r.amount.edges, "%.3g") + " mean edge lengths" + (r.amount.automatic ? ", auto" : "") + ")";
+                 number(r.amount.edges, "%.3g") + " mean edge lengths" + (r.amount.automatic ? ", auto" : "") + ")" +
+                 (r.amount.operators == AmountOperators::Graph ? ", uniform operators (a rough scan)" : "");
   if (h > 0)
     r.amountLine += ", halved " + std::to_string(h) + (h == 1 ? " time" : " times") +
                     ": a larger one raised the energy (a feature smaller than it collapsed)";
@@ -317,8 +318,12 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
   // "auto" is no amount where an amount has no meaning: the bilaplacian's time has no length unit,
   // and subdivision levels ask for coarse to fine, to the limit shape.
   r.amount.automatic = opt.featureSize == kAutoFeatureSize;
-  if (r.amount.automatic)
-    opt.featureSize = opt.flow == FlowType::Bilaplacian || opt.subdivisionLevels > 0 ? 0 : autoFeatureSize(mesh, faces);
+  const bool amountMeaningful = opt.flow != FlowType::Bilaplacian && opt.subdivisionLevels == 0;
+  const AutoAmount own = amountMeaningful ? autoAmount(mesh, faces) : AutoAmount{};
+  if (r.amount.automatic) opt.featureSize = own.featureSize;
+  // Any amount runs with the operators the default would (a rough scan's uniform ones): the
+  // default's printed amount typed back gives its output.
+  opt.amountOperators = own.operators;
   JobOptions job;
   job.flow = opt;
   checkOptions(FilterId::Fairing, job);
@@ -332,6 +337,7 @@ FairingResult runFairing(TriMesh mesh, std::optional<FaceSet> region, const Flow
 
   std::optional<MeshCurvature> measured = fairHalvingTheAmount(mesh, region, opt, measure, input, r);
   r.amount.featureSize = opt.featureSize > 0 ? opt.featureSize : 0;
+  r.amount.operators = opt.amountOperators;
   r.amount.edges = meanEdge > 0 ? r.amount.featureSize / meanEdge : 0;
   r.amount.perDiagonal = r.diagonal > 0 ? r.amount.featureSize / r.diagonal : 0;
   if (r.amount.featureSize > 0) measureRoughness(r.amount, input, faces, mesh, r.report);

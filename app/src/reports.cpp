@@ -79,6 +79,7 @@ nlohmann::json fairingReport(const FlowReport& r, const FlowOptions& opt, int in
     j["feature_size_edges"] = a.edges;
     j["feature_size_auto"] = a.automatic;
     j["feature_size_halvings"] = a.halvings;
+    j["amount_operators"] = a.operators == AmountOperators::Graph ? "graph" : "cotangent";
     j["roughness_before"] = a.roughnessBefore;
     j["roughness_after"] = a.roughnessAfter;
     j["rough"] = a.suggested > 0;  // still rough: suggested_feature_size smooths it further

@@ -55,6 +55,16 @@ enum class BoundaryMode {
   Slide,
 };
 
+/// The operators of a fairing amount's filter (FlowOptions::amountOperators).
+enum class AmountOperators {
+  /// The input's cotangent weights and FlowOptions::area vertex areas (default): exact on a fair mesh.
+  Cotangent,
+  /// Uniform weights 1/√3 (an equilateral triangle's cotangent weight) and areas proportional to
+  /// the vertex's faces (each (√3/4)·ℓ̄²/3, ℓ̄ the mean edge): on a noisy scan the cotangent weights
+  /// and mixed areas are built from the noise (docs/options.md, "The default amount").
+  Graph,
+};
+
 /// Why a run stopped.
 enum class StopReason {
   Converged,   ///< the energy plateau
@@ -132,6 +142,10 @@ struct FlowOptions {
   /// t = 2 ln(100) (featureSize/2π)⁴, in which ripples of that wavelength lose 99 % of their height, then stop with
   /// StopReason::FeatureSize (docs/options.md). Elastica and Laplacian-of-H flows. Default 0.
   double featureSize = 0;
+  /// The operators of featureSize's filter; default the mesh's cotangents. Not an option of any
+  /// face: every face's run (app's runFairing) sets it from the mesh, Graph for a rough scan
+  /// (app/fairing_amount.h), whatever the amount.
+  AmountOperators amountOperators = AmountOperators::Cotangent;
 
   /// Step limit over all stages; default none (the largest count; every face shows it as 0).
   long long maxSteps = std::numeric_limits<long long>::max();

@@ -538,7 +538,7 @@ StageEnd vectorStage(FlowState& state, Run& run, FlowStage& stage, double shapeT
 void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
   const double tau = run.timeLimit / kFeatureSteps;
   PrincipalPartFilter filter;
-  if (!filter.prepare(state, tau))
+  if (!filter.prepare(state, tau, run.opt.amountOperators))
     throw NumericalError("fair: the fairing amount's matrix is not positive definite (a degenerate moving region)");
   while (!run.limitReached()) {
     ++run.report.steps;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/complex_symmetric_ldlt.h"
+#include "flow/amount_operators.h"
 #include "flow/incomplete_cholesky_cg.h"
 #include "flow/principal_part_filter.h"
 #include "flow/semi_implicit_system.h"
@@ -132,7 +133,7 @@ struct PrincipalPartFilter::Solver {
 PrincipalPartFilter::PrincipalPartFilter() = default;
 PrincipalPartFilter::~PrincipalPartFilter() = default;
 
-bool PrincipalPartFilter::prepare(FlowState& state, double tau) {
+bool PrincipalPartFilter::prepare(FlowState& state, double tau, AmountOperators operators) {
   const Topology& topo = state.topology();
   const Geometry& geo = state.geometryOnly();
   const VertexRoles& roles = state.roles();
@@ -142,6 +143,7 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau) {
     if (roles.free[v]) freeIndex_[v] = rows++;
   edgeWeight_ = geo.edgeWeight;
   vertexArea_ = geo.vertexArea;
+  if (operators == AmountOperators::Graph) graphAmountOperators(topo, state.positions(), edgeWeight_, vertexArea_);
   tau_ = tau;
   solver_ = std::make_unique<Solver>();
   solver_->rows = rows;

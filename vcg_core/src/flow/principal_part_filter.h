@@ -25,6 +25,8 @@
 
 #include "flow/flow_state.h"
 
+#include <elastica/flow.h>
+
 #include <memory>
 #include <vector>
 
@@ -39,8 +41,9 @@ class PrincipalPartFilter {
 
   /// Builds and factorises the step's matrix for step `tau` from `state`'s geometry now: the
   /// operators of every later step(). Fixed and sliding vertices stay where they are (their
-  /// positions enter as data). False if the matrix is not numerically positive definite.
-  bool prepare(FlowState& state, double tau);
+  /// positions enter as data). `operators` Graph: uniform ones instead of the cotangents
+  /// (flow/amount_operators.h). False if the matrix is not numerically positive definite.
+  bool prepare(FlowState& state, double tau, AmountOperators operators = AmountOperators::Cotangent);
   /// One step: moves the free vertices of `state` (and invalidates its caches). False, with the
   /// positions unchanged, if a displacement is not finite.
   bool step(FlowState& state);

@@ -9,10 +9,15 @@
 // the value printed is the value used. The edge quantile, not the mean: the amount runs one flow
 // time for the whole mesh, and a scan finer where its detail is lost that detail to an amount
 // sized from the mean. The roughness (surfaceRoughness) raises it where the surface is noisy.
+// A rough scan without long slivers (amountOperatorsFor) is faired with uniform operators
+// (AmountOperators::Graph) instead of its noisy cotangents, by graphAmountEdges(roughness) MEAN
+// edges: with one area scale their Laplacian reads a finer region's edges as the mean edge, so
+// they smooth each region by that many of its own edges (no fine feature gets the coarse amount).
 // Measurements: docs/options.md, "The default amount".
 #pragma once
 
 #include <elastica/face_set.h>
+#include <elastica/flow.h>
 #include <elastica/types.h>
 
 #include <string>
@@ -37,6 +42,23 @@ inline constexpr double kEdgesPerRoughness = 16;
 /// A result rougher than this is reported as still rough, with a larger amount suggested.
 inline constexpr double kRoughResult = 0.1;
 
+/// A rough surface (roughness above kCleanRoughness) whose mean edge is at most this many of its
+/// kAutoEdgeQuantile edges is faired with AmountOperators::Graph: its cotangents and mixed areas,
+/// built from the noise, are poor, and an even mesh loses little by uniform ones. Long slivers
+/// (the CAD part joint: 6.6) keep cotangents, which know the slivers' shape.
+inline constexpr double kGraphMaxEdgeRatio = 4;
+/// The Graph amount in mean edge lengths: kGraphEdges + kGraphEdgesPerRoughness · (ρ − kCleanRoughness).
+inline constexpr double kGraphEdges = 1.6;
+inline constexpr double kGraphEdgesPerRoughness = 7.5;
+
+/// The default amount of a mesh's faces, with the operators it runs with and the roughness it
+/// was sized from.
+struct AutoAmount {
+  double featureSize = 0;
+  AmountOperators operators = AmountOperators::Cotangent;
+  double roughness = 0;
+};
+
 /// The amount in edge lengths for a surface of `roughness` (surfaceRoughness): kAutoFeatureEdges
 /// on a clean surface, more on a noisy one.
 double amountEdges(double roughness);
@@ -47,12 +69,23 @@ double amountEdges(double roughness);
 /// (3-D noise uniform in a ball of 0.3 edge gives about 0.1). 0 for no faces.
 double surfaceRoughness(const TriMesh& mesh, const FaceSet* region);
 
-/// amountEdges(roughness) × the kAutoEdgeQuantile quantile of `edgeLengths` (each face's three
-/// edges; an inner edge counted twice changes no quantile much), rounded (roundedAmount). 0 for
-/// no edges. Reorders `edgeLengths`.
-double autoFeatureSize(std::vector<double>& edgeLengths, double roughness);
+/// The Graph operators' amount in mean edge lengths for a surface of `roughness`.
+double graphAmountEdges(double roughness);
+
+/// The operators for faces of `roughness`, mean edge `meanEdge` and kAutoEdgeQuantile edge
+/// `quantileEdge` (kGraphMaxEdgeRatio).
+AmountOperators amountOperatorsFor(double roughness, double meanEdge, double quantileEdge);
+
+/// The default amount for faces with these edges (each face's three edges; an inner edge counted
+/// twice changes no quantile much) and `roughness`: with the cotangents, amountEdges(roughness) ×
+/// the kAutoEdgeQuantile edge; with Graph operators, graphAmountEdges(roughness) × the mean edge;
+/// rounded (roundedAmount). 0 for no edges. Reorders `edgeLengths`.
+AutoAmount autoAmount(std::vector<double>& edgeLengths, double roughness);
 
 /// The same for `mesh`, over the faces of `region` (all faces without one), with its roughness.
+AutoAmount autoAmount(const TriMesh& mesh, const FaceSet* region);
+
+/// autoAmount's featureSize: the amount "auto" stands for.
 double autoFeatureSize(const TriMesh& mesh, const FaceSet* region);
 
 /// `x` to 6 significant digits: an amount that prints as it is.

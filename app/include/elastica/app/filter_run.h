@@ -92,6 +92,8 @@ struct FairingResult {
     double perDiagonal = 0;  ///< featureSize as a fraction of the input's bounding-box diagonal
     bool automatic = false;  ///< sized by autoFeatureSize ("auto", every face's default)
     int halvings = 0;        ///< times it was halved because it raised the energy (kAmountHalvings)
+    /// The filter's operators (AmountOperators::Graph on a rough scan, fairing_amount.h).
+    AmountOperators operators = AmountOperators::Cotangent;
     /// surfaceRoughness of the faces to fair, before and after; a result rougher than
     /// kRoughResult gets `suggested`, the amount on the input that adds the result's own (else 0).
     double roughnessBefore = 0, roughnessAfter = 0, suggested = 0;
