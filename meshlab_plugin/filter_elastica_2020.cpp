@@ -1,11 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "filter_elastica_2020.h"
 #include "filter_common.h"
-
-#include <common/ml_shared_data_context.h>
-
-#include <QApplication>
-#include <QGLWidget>
+#include "view_shading.h"
 
 namespace em = elastica::meshlab;
 
@@ -52,39 +48,6 @@ void FilterElasticaPlugin::initParameterSet(QAction* action, MeshModel& m, RichP
   em::addParameters(em::filterId(ID(action)), m.cm, params);
 }
 
-namespace {
-
-// True unless every view that shows `mm` shades it without vertex normals (Face shading, say).
-// MeshLab 2020.09 turns vertex-normal shading on, and face-normal shading off, in every view of
-// a mesh whose post-condition has MM_VERTNORMAL (MLPoliciesStandAloneFunctions::
-// updatedRendAttsAccordingToPriorities): a fairing in Face shading came back in Vert. Views are
-// the QGLWidgets that the document's shared GL context (MLSceneGLSharedDataContext) holds
-// rendering data for; without any (meshlabserver) the vertex normals stay declared.
-bool someViewUsesVertexNormals(const MeshDocument& md, const MeshModel& mm) {
-  bool viewFound = false;
-  const QWidgetList widgets = QApplication::allWidgets();
-  for (QWidget* w : widgets) {
-    auto* shared = qobject_cast<MLSceneGLSharedDataContext*>(w);
-    if (shared == nullptr || &shared->meshDoc() != &md) continue;
-    for (QWidget* v : widgets) {
-      auto* view = qobject_cast<QGLWidget*>(v);
-      if (view == nullptr || view == shared || view->context() == nullptr) continue;
-      MLRenderingData dt;  // nothing active: a widget that is not a view of this mesh
-      shared->getRenderInfoPerMeshView(mm.id(), const_cast<QGLContext*>(view->context()), dt);
-      for (auto pm = MLRenderingData::PRIMITIVE_MODALITY(0); pm < MLRenderingData::PR_ARITY; pm = MLRenderingData::next(pm)) {
-        if (!dt.isPrimitiveActive(pm)) continue;
-        viewFound = true;
-        MLRenderingData::RendAtts atts;
-        dt.get(pm, atts);
-        if (atts[MLRenderingData::ATT_NAMES::ATT_VERTNORMAL]) return true;
-      }
-    }
-  }
-  return !viewFound;
-}
-
-}  // namespace
-
 bool FilterElasticaPlugin::applyFilter(QAction* action, MeshDocument& md, const RichParameterList& params,
                                        vcg::CallBackPos* cb) {
   const elastica::app::FilterId id = em::filterId(ID(action));
@@ -92,11 +55,7 @@ bool FilterElasticaPlugin::applyFilter(QAction* action, MeshDocument& md, const 
   runMask = int(MeshModel::MM_NONE);  // until it succeeds
   try {
     const em::RunOutcome outcome = em::runFilter(id, md, params, cb);
-    runMask = outcome.changed;
-    // The user's shading stays: with the connectivity kept (MeshLab refreshes everything, and
-    // shades by vertex, when it changed), vertex normals are declared only where a view shows them.
-    if (!(*runMask & MeshModel::MM_FACEVERT) && md.mm() && !someViewUsesVertexNormals(md, *md.mm()))
-      *runMask &= ~int(MeshModel::MM_VERTNORMAL);
+    runMask = em::keepUserShading(outcome.changed, md);  // the user's shading stays (view_shading.h)
     for (const em::LogLine& line : outcome.log) {
       if (line.warning)
         Log(GLLogStream::WARNING, "%s", line.text.c_str());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "filter_elastica_2022.h"
 #include "filter_common.h"
+#include "view_shading.h"
 
 namespace em = elastica::meshlab;
 
@@ -53,7 +54,7 @@ std::map<std::string, QVariant> FilterElasticaPlugin::applyFilter(const QAction*
     log(GLLogStream::WARNING, message);
     throw MLException(em::qs(message));
   }
-  postConditionMask = static_cast<unsigned int>(outcome.changed);
+  postConditionMask = static_cast<unsigned int>(em::keepUserShading(outcome.changed, md));  // view_shading.h
   for (const em::LogLine& line : outcome.log) log(line.warning ? GLLogStream::WARNING : GLLogStream::FILTER, line.text);
   return {};
 }

@@ -79,11 +79,18 @@ bind() {
 in_root() { chroot "$_root_dir" env -i PATH=/usr/sbin:/usr/bin:/sbin:/bin HOME=/root LC_ALL=C.UTF-8 DEBIAN_FRONTEND=noninteractive "$@"; }
 
 # xvfb-run -a looks only at the root's /tmp, but X servers share the host's abstract sockets: pick a
-# display free in both (an Xvfb of a test beside this run made the root's Xvfb fail).
+# display free in both (an Xvfb of a test beside this run made the root's Xvfb fail), whose abstract
+# socket no server still holds (/proc/net/unix): the Xvfb of the step before, ended by its xvfb-run,
+# may hold it a moment after its lock file is gone, and a client of the next step then reaches that
+# dying server (the likely cause of "could not connect to display" in 2 of 5 GUI steps on
+# 2026-12-03, each right after another step's Xvfb). Each call starts elsewhere.
 free_display() {
   local n
-  for ((n = 200 + $$ % 500; ; ++n)); do
-    [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n || -e $_root_dir/tmp/.X$n-lock ]] || { echo "$n"; return; }
+  for ((n = 200 + ($$ + 10#$(date +%N) / 1000) % 500; ; ++n)); do
+    [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n || -e $_root_dir/tmp/.X$n-lock ]] && continue
+    grep -q "@/tmp/.X11-unix/X$n\$" /proc/net/unix && continue
+    echo "$n"
+    return
   done
 }
 

@@ -20,7 +20,9 @@
 #    script and input (same counts, positions within 1e-5 of the diagonal) and differs from the input.
 # 4. With --screenshot: MeshLab 2022.02's window under Xvfb, the faired sphere loaded and the menu
 #    Filters > Smoothing, Fairing and Deformation open, saved as OUT.png (the faired torus).
-# 5. The Load-Plugins file: the package removed again, the file loaded with Help > Plugin Info > Load
+# 5. The user's shading (packaging/meshlab2022/shading.sh, Xvfb): the bunny opened in Face shading,
+#    faired from the filter search at its defaults, still in Face shading (both saved projects kept).
+# 6. The Load-Plugins file: the package removed again, the file loaded with Help > Plugin Info > Load
 #    Plugins in MeshLab's GUI (Xvfb), which copies it into its per-user folder; the fairing filter from
 #    that copy equals `elastica run` again.
 # Leaves $cache/meshlab2022/: the trixie .deb of the plugin (meshlab-plugin-elastica_*_amd64.deb),
@@ -29,7 +31,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/debian-root.sh
-root_script meshlab2022 '3,28p' trixie-root "$@"
+root_script meshlab2022 '3,30p' trixie-root "$@"
 mltree=$(ls -d "$cache"/meshlab-trixie-src-2022.02*/ 2>/dev/null | tail -n1)
 [[ -n "$mltree" && -f "$mltree/.elastica-complete" ]] || fail "no MeshLab 2022.02 source tree in $cache (run scripts/setup.sh)"
 
@@ -125,7 +127,12 @@ if [[ -n "$shot" ]]; then
   cp "$root/work/shot.png" "$shot"
   echo "screenshot: $shot"
 fi
-# ---------------------------------------------------------------- 5. the Load-Plugins file in MeshLab 2022.02
+# ---------------------------------------------------------------- 5. the user's shading in MeshLab 2022.02
+step "the user's shading after a fairing in MeshLab 2022.02's GUI"
+run xvfb-run -a -n "$(free_display)" -s "-screen 0 1600x900x24" bash /src/elastica/packaging/meshlab2022/shading.sh \
+  /src/elastica/data/bunny.ply /work || fail "MeshLab 2022.02 changed the shading after a fairing (see $out/shading_after.png)"
+cp "$root"/work/shading_* "$out/"
+# ---------------------------------------------------------------- 6. the Load-Plugins file in MeshLab 2022.02
 step "the Load-Plugins file through MeshLab 2022.02's Help > Plugin Info > Load Plugins"
 # Without the package, MeshLab's plugin folder lacks ours: the filter can only come from the loaded copy.
 in_root apt-get remove -y -qq meshlab-plugin-elastica >/dev/null

@@ -18,7 +18,9 @@
 # 4. The plugin's .deb installed into sid's MeshLab; run_filter applies fairing (a noisy sphere), fill
 #    (the bunny with its flank cut away), a selected region (libcgal-demo's lion head, 1,000 faces of
 #    its cheek selected in MeshLab's face flags, the inner 500 rough) and curvature (the bunny: H in the
-#    vertex quality within 1e-5 of the largest |H|), each equal to `elastica run` on the same script and input.
+#    vertex quality within 1e-5 of the largest |H|), each equal to `elastica run` on the same script and input;
+#    then the user's shading (packaging/meshlab2022/shading.sh, Xvfb): the bunny opened in Face shading,
+#    faired from the filter search at its defaults, still in Face shading (both saved projects kept).
 # 5. Help > Plugin Info > Load Plugins in MeshLab's GUI (Xvfb) takes the bundle's .so (package removed);
 #    the fairing filter from the copy MeshLab made equals `elastica run` again.
 # 6. The bundle for users of the upstream 2025.07 Linux build: $cache/meshlab2025/
@@ -28,7 +30,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/debian-root.sh
-root_script meshlab2025 '3,27p' sid-root "$@"
+root_script meshlab2025 '3,29p' sid-root "$@"
 source scripts/sid-build.sh
 
 # ---------------------------------------------------------------- 1-2. root and build
@@ -126,6 +128,10 @@ if in_meshlab "$plugins" /src/elastica/data/bunny.ply /work/curvature_other.ply 
 fi
 echo "(another curvature refused by the comparison, as it must be)"
 cp "$root"/work/*_meshlab.ply "$out/"
+step "the user's shading after a fairing in MeshLab 2025.07's GUI"
+run env MESHLAB_TITLE="MeshLab 2025" xvfb-run -a -n "$(free_display)" -s "-screen 0 1600x900x24" bash /src/elastica/packaging/meshlab2022/shading.sh \
+  /src/elastica/data/bunny.ply /work || fail "MeshLab 2025.07 changed the shading after a fairing (see $out/shading_after.png)"
+cp "$root"/work/shading_* "$out/"
 
 if [[ -n "$shot" ]]; then
   step "screenshot: MeshLab 2025.07 with the faired lion head region and the Filters menu"

@@ -7,7 +7,8 @@
 # warning; the exported PLY has the vertex and face counts the log reports and only the
 # attributes the filter wrote (MeshLab's export dialog ticks what the mesh carries). Kept per case
 # in ARTEFACT_DIR: before_CASE.png (the mesh as opened), apply_CASE.png (the screen after Apply), export_CASE.png (the export options),
-# and meshlab_CASE.log.
+# and meshlab_CASE.log; with SHADING=1 (the fairing case), shading_before_CASE.mlp and
+# shading_after_CASE.mlp, the projects saved before and after Apply, whose shading must be the same.
 # Run under `scripts/with-xvfb.sh -s "-screen 0 1920x1080x24"` (ctest does). Usage:
 #   gui_apply_test.sh PREFIX_SCRIPT PLUGIN.so PREFIX_DIR DATA_DIR ARTEFACT_DIR ELASTICA_EXE
 set -euo pipefail
@@ -43,13 +44,8 @@ run_case() {
   xdotool windowsize "$main" 1280 1024 windowmove "$main" 0 0
   sleep 1.5   # let the viewport paint
   import -window root "$artefacts/before_$case.png"
-  xdotool windowfocus "$main"
-  sleep 0.5
-  xdotool key ctrl+f
-  sleep 0.5
-  xdotool type --delay 20 "$filter"
-  sleep 0.5
-  xdotool key Down Return
+  ((${SHADING:-0})) && save_project "$main" "$artefacts/shading_before_$case.mlp"
+  search_filter "$main" "$filter"
   dialog=$(wait_window "^$filter\$" 10) || { import -window root "$shot"; fail "$case: no '$filter' dialog (screen: $shot)"; }
   xdotool windowmove "$dialog" 1290 0   # beside the main window, so the viewport shows
   sleep 0.5
@@ -61,6 +57,13 @@ run_case() {
   import -window root "$shot"
   grep -q "Filter failed" "$log" && fail "$case: the filter failed: $(grep 'LOG: ' "$log" | tail -n 3)"
   grep -q "^LOG: 1 " "$log" && fail "$case: a warning was logged: $(grep '^LOG: 1 ' "$log")"
+  if ((${SHADING:-0})); then
+    save_project "$main" "$artefacts/shading_after_$case.mlp"
+    local before after
+    before=$(shading "$artefacts/shading_before_$case.mlp") after=$(shading "$artefacts/shading_after_$case.mlp")
+    [[ $before == "$after" ]] || fail "$case: MeshLab's shading went from $before to $after (meshlab_plugin/view_shading.h)"
+    echo "--- $case: shading $before before and after"
+  fi
   # Export: the file dialog takes a path, the options dialog is accepted as proposed.
   xdotool windowfocus "$main"
   sleep 0.3
@@ -87,8 +90,9 @@ expect_no_property() {
 
 # Fairing the whole bunny at the defaults (the mesh's own fairing amount, app/fairing_amount.h):
 # a fairer bunny with its vertices and faces kept; positions and normals change, no colour or
-# quality is added; the log says the amount and how far the surface moved.
-case=fairing; run_case fairing "$data/bunny.ply" "Discrete Elastica Fairing"
+# quality is added; the log says the amount and how far the surface moved. The view's shading
+# (Face: the bunny has no normals in its file) is the same after Apply.
+case=fairing; SHADING=1 run_case fairing "$data/bunny.ply" "Discrete Elastica Fairing"
 expect_log "Discrete Elastica Fairing: 1839 -> 1839 vertices, [0-9]* steps in .* (faired to the feature size)"
 expect_log "Discrete Elastica Fairing: fairing amount: feature size [0-9.e+-]* ([0-9.e+-]* % of the bounding-box diagonal, [0-9.]* mean edge lengths"
 expect_log "Discrete Elastica Fairing: the vertices moved by [0-9.e+-]* % of the bounding-box diagonal"

@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Shared by the GUI tests (sourced): fail, wait_display for Xvfb, wait_window for MeshLab's windows,
-# and the tests' common start (gui_check_display, gui_install_plugin). The sourcing script sets
+# search_filter, save_project and shading for the view's shading, and the tests' common start (gui_check_display,
+# gui_install_plugin). packaging/meshlab2022/shading.sh sources it in the trixie and sid roots. The sourcing script sets
 # meshlab_pid once MeshLab runs.
 
 fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
@@ -26,6 +27,50 @@ wait_window() {
     sleep 0.2
   done
   return 1
+}
+
+# search_filter MAIN_WINDOW NAME: MeshLab's filter search (Ctrl+F) opens the filter NAME's parameters.
+search_filter() {
+  xdotool windowfocus "$1"
+  sleep 0.5
+  xdotool key ctrl+f
+  sleep 0.5
+  xdotool type --delay 20 "$2"
+  sleep 0.5
+  xdotool key Down Return
+}
+
+# save_project MAIN_WINDOW OUT.mlp: File > Save Project As (Ctrl+S in MeshLab 2020.09 to 2025.07)
+# writes OUT.mlp, the view state with it (the dialog's default), the mesh files left as they are.
+save_project() {
+  local main=$1 out=$2
+  rm -f "$out"
+  xdotool windowfocus "$main"
+  sleep 0.3
+  xdotool key ctrl+s
+  wait_window '^Save Project File' 10 >/dev/null || fail "no Save Project File dialog"
+  sleep 0.5
+  xdotool type --delay 10 "$out"
+  xdotool key Return
+  local deadline=$((SECONDS + 10))
+  until [[ -s $out ]] && grep -q '</MeshLabProject>' "$out"; do
+    ((SECONDS < deadline)) || fail "MeshLab did not save the project $out in 10 s"
+    sleep 0.2
+  done
+}
+
+# shading PROJECT.mlp: how the view shades the project's first mesh, as its RenderingOption stores
+# it (vcglib's PerViewData::serialize): the 4 modalities' on-bits, solid first (bitset order), then
+# 9 attribute bits per modality (points, edges, wireframe, solid: position, vertex normal, face
+# normal, ...), then the view options. Prints "Vert", "Face" or "None" (solid drawn with neither
+# normal), or "no solid" with the bits.
+shading() {
+  local bits solid
+  bits=$(sed -n 's/.*<RenderingOption[^>]*>\([01]*\)<.*/\1/p' "$1" | head -n1)
+  ((${#bits} >= 40)) || fail "no RenderingOption in $1"
+  [[ ${bits:0:1} == 1 ]] || { echo "no solid (${bits:0:40})"; return 0; }
+  solid=${bits:31:9}
+  if [[ ${solid:1:1} == 1 ]]; then echo Vert; elif [[ ${solid:2:1} == 1 ]]; then echo Face; else echo None; fi
 }
 
 # An X display that answers, and the tools the tests drive MeshLab with.

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-3.0-or-later
 # CI's check of the MeshLab 2022.02 plugin API (Debian 13's MeshLab), which this machine cannot
-# install: the shared filter code (meshlab_plugin/filter_common.cpp) and the 2022 plugin class
+# install: the shared filter code (meshlab_plugin/filter_common.cpp, view_shading.cpp) and the 2022 plugin class
 # (filter_elastica_2022.cpp) are compiled with -fsyntax-only against the headers and the vcglib of
 # Debian 13's meshlab source package (fetched by scripts/setup.sh), -Werror for our code; moc runs
 # on filter_elastica_2022.h with ELASTICA_MESHLAB_API=2022, as AUTOMOC does in a 2022 build, its
@@ -26,7 +26,7 @@ api=(-DELASTICA_MESHLAB_API=2022 -DMESHLAB_SCALAR=float "-DMESHLAB_VERSION=$vers
 includes=(-I"$src/meshlab_plugin" -I"$src/app/include" -I"$src/vcg_core/include" -isystem "$tree/src" -isystem "$tree/src/vcglib")
 mkdir -p "$work"
 start=$SECONDS
-for file in filter_common.cpp filter_elastica_2022.cpp; do
+for file in filter_common.cpp view_shading.cpp filter_elastica_2022.cpp; do
   "$cxx" -std=c++17 -fPIC -fsyntax-only -Wall -Wextra -Werror "${api[@]}" "${includes[@]}" "${flags[@]}" \
     "$src/meshlab_plugin/$file" || fail "meshlab_plugin/$file does not compile against MeshLab $version ($tree)"
   echo "compiles against MeshLab $version: meshlab_plugin/$file"
