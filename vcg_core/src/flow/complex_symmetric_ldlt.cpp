@@ -134,6 +134,22 @@ void ComplexSymmetricLdlt::analyzePattern(const Matrix& A) {
   consider(amdOrderingCsl(A));
   position_.assign(n, 0);
   for (int k = 0; k < n; ++k) position_[order_[k]] = k;
+  // Supernodes: column j ends where j + 1 is not its parent or has not one entry fewer. Within
+  // one, column j's rows are j + 1 … last, then the last column's (L_{*,j} \ {j+1} ⊆ L_{*,j+1}
+  // for parent j + 1, with equal counts it is all of it), so only each last column stores rows.
+  std::vector<int> last(n, 0);
+  for (int j = n - 1; j >= 0; --j) {
+    const bool joins = j + 1 < n && parent_[j] == j + 1 &&
+                       columnStart_[j + 1] - columnStart_[j] == columnStart_[j + 2] - columnStart_[j + 1] + 1;
+    last[j] = joins ? last[j + 1] : j;
+  }
+  columnRows_.assign(n, ColumnRows{});
+  storedRows_ = 0;
+  for (int j = 0; j < n; ++j) {
+    if (last[j] != j) continue;
+    for (int i = j; i >= 0 && last[i] == j; --i) columnRows_[i] = ColumnRows{storedRows_ - (j - i), j - i};
+    storedRows_ += columnStart_[j + 1] - columnStart_[j];
+  }
 }
 
 bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
@@ -141,7 +157,7 @@ bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
   if (columnStart_.size() != static_cast<std::size_t>(n) + 1) analyzePattern(A);
   factored_ = false;
   [[maybe_unused]] FlushSubnormals flush;  // empty without SSE
-  rowIndex_.resize(columnStart_.back());
+  rowIndex_.resize(storedRows_);
   value_.resize(columnStart_.back());
   diagonal_.resize(n);  // holds 1/D
   std::vector<Complex> y(n, Complex(0, 0));
@@ -167,12 +183,12 @@ bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
       const int i = stack[top];
       const Complex yi = y[i];
       y[i] = Complex(0, 0);
-      const std::int64_t end = columnStart_[i] + count[i];
-      for (std::int64_t p = columnStart_[i]; p < end; ++p) subtractProductCsl(y[rowIndex_[p]], value_[p], yi);
+      const Complex* li = value_.data() + columnStart_[i];
+      forEachRow(i, count[i], [&](std::int64_t t, int row) { subtractProductCsl(y[row], li[t], yi); });
       const Complex l = productCsl(yi, diagonal_[i]);
       subtractProductCsl(d, l, yi);
-      rowIndex_[end] = k;
-      value_[end] = l;
+      if (columnRows_[i].implied == 0) rowIndex_[columnRows_[i].stored + count[i]] = k;  // else implied
+      value_[columnStart_[i] + count[i]] = l;
       ++count[i];
     }
     if (!std::isfinite(d.real()) || !std::isfinite(d.imag()) || d == Complex(0, 0)) return false;
@@ -193,19 +209,21 @@ void ComplexSymmetricLdlt::solve(const Eigen::MatrixXcd& B, Eigen::MatrixXcd& X)
   for (int k = 0; k < n; ++k) y.row(k) = B.row(order_[k]);
   Complex* row = y.data();
   for (int j = 0; j < n; ++j) {  // L y = Pb
-    for (std::int64_t p = columnStart_[j]; p < columnStart_[j + 1]; ++p) {
-      Complex* target = row + static_cast<std::ptrdiff_t>(rowIndex_[p]) * m;
-      for (int c = 0; c < m; ++c) subtractProductCsl(target[c], value_[p], row[static_cast<std::ptrdiff_t>(j) * m + c]);
-    }
+    const Complex* lj = value_.data() + columnStart_[j];
+    forEachRow(j, columnStart_[j + 1] - columnStart_[j], [&](std::int64_t t, int r) {
+      Complex* target = row + static_cast<std::ptrdiff_t>(r) * m;
+      for (int c = 0; c < m; ++c) subtractProductCsl(target[c], lj[t], row[static_cast<std::ptrdiff_t>(j) * m + c]);
+    });
   }
   for (int j = 0; j < n; ++j)  // D
     for (int c = 0; c < m; ++c) y(j, c) = productCsl(y(j, c), diagonal_[j]);
   for (int j = n - 1; j >= 0; --j) {  // Lᵀ (no conjugation)
     Complex* out = row + static_cast<std::ptrdiff_t>(j) * m;
-    for (std::int64_t p = columnStart_[j]; p < columnStart_[j + 1]; ++p) {
-      const Complex* source = row + static_cast<std::ptrdiff_t>(rowIndex_[p]) * m;
-      for (int c = 0; c < m; ++c) subtractProductCsl(out[c], value_[p], source[c]);
-    }
+    const Complex* lj = value_.data() + columnStart_[j];
+    forEachRow(j, columnStart_[j + 1] - columnStart_[j], [&](std::int64_t t, int r) {
+      const Complex* source = row + static_cast<std::ptrdiff_t>(r) * m;
+      for (int c = 0; c < m; ++c) subtractProductCsl(out[c], lj[t], source[c]);
+    });
   }
   X.resize(n, m);
   for (int k = 0; k < n; ++k) X.row(order_[k]) = y.row(k);
