@@ -63,8 +63,7 @@ class ComplexSymmetricLdlt {
     const std::int64_t implied = std::min<std::int64_t>(entries, c.implied);
     std::int64_t t = 0;
     for (; t < implied; ++t) f(t, j + 1 + static_cast<int>(t));
-    const int* stored = rowIndex_.data() + c.stored;
-    for (; t < entries; ++t) f(t, stored[t]);
+    for (; t < entries; ++t) f(t, rowIndex_[static_cast<std::size_t>(c.stored + t)]);  // c.stored + t ≥ 0 here
   }
 
   std::vector<std::int64_t> columnStart_;  // L's values of column j: value_[columnStart_[j] …]
