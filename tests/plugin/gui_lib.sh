@@ -1,8 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # Shared by the GUI tests (sourced): fail, wait_display for Xvfb, wait_window for MeshLab's windows,
-# search_filter, save_project and shading for the view's shading, and the tests' common start (gui_check_display,
-# gui_install_plugin). packaging/meshlab2022/shading.sh sources it in the trixie and sid roots. The sourcing script sets
-# meshlab_pid once MeshLab runs.
+# search_filter, save_project, shading and same_shading for the view's shading, and the tests'
+# common start (gui_check_display, gui_install_plugin). packaging/meshlab2022/shading.sh sources it
+# in the trixie and sid roots. The sourcing script sets meshlab_pid once MeshLab runs.
 
 fail() { printf 'FAIL: %s\n' "$*" >&2; exit 1; }
 
@@ -71,6 +71,15 @@ shading() {
   [[ ${bits:0:1} == 1 ]] || { echo "no solid (${bits:0:40})"; return 0; }
   solid=${bits:31:9}
   if [[ ${solid:1:1} == 1 ]]; then echo Vert; elif [[ ${solid:2:1} == 1 ]]; then echo Face; else echo None; fi
+}
+
+# same_shading BEFORE.mlp AFTER.mlp WHAT: prints the shading both projects have, or fails saying
+# how WHAT changed it.
+same_shading() {
+  local before after
+  before=$(shading "$1") after=$(shading "$2")
+  [[ $before == "$after" ]] || fail "MeshLab's shading went from $before to $after after $3 (meshlab_plugin/view_shading.h)"
+  echo "$before"
 }
 
 # An X display that answers, and the tools the tests drive MeshLab with.
