@@ -201,12 +201,28 @@ bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
 
 void ComplexSymmetricLdlt::solve(const Eigen::MatrixXcd& B, Eigen::MatrixXcd& X) const {
   const int n = static_cast<int>(order_.size());
-  const int m = static_cast<int>(B.cols());
+  Rows y(n, B.cols());
+  for (int k = 0; k < n; ++k) y.row(k) = B.row(order_[k]);
+  solvePermuted(y);
+  X.resize(n, B.cols());
+  for (int k = 0; k < n; ++k) X.row(order_[k]) = y.row(k);
+}
+
+void ComplexSymmetricLdlt::solveRealPart(const Eigen::MatrixXd& B, Eigen::MatrixXd& X) const {
+  const int n = static_cast<int>(order_.size());
+  Rows y(n, B.cols());
+  for (int k = 0; k < n; ++k) y.row(k) = B.row(order_[k]).cast<Complex>();
+  solvePermuted(y);
+  X.resize(n, B.cols());
+  for (int k = 0; k < n; ++k) X.row(order_[k]) = y.row(k).real();
+}
+
+void ComplexSymmetricLdlt::solvePermuted(Rows& y) const {
+  const int n = static_cast<int>(order_.size());
+  const int m = static_cast<int>(y.cols());
   [[maybe_unused]] FlushSubnormals flush;
   // The columns side by side per row: one pass over the factor for all of them (each column's
   // arithmetic is the same as alone).
-  Eigen::Matrix<Complex, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y(n, m);
-  for (int k = 0; k < n; ++k) y.row(k) = B.row(order_[k]);
   Complex* row = y.data();
   for (int j = 0; j < n; ++j) {  // L y = Pb
     const Complex* lj = value_.data() + columnStart_[j];
@@ -225,8 +241,6 @@ void ComplexSymmetricLdlt::solve(const Eigen::MatrixXcd& B, Eigen::MatrixXcd& X)
       for (int c = 0; c < m; ++c) subtractProductCsl(out[c], lj[t], source[c]);
     });
   }
-  X.resize(n, m);
-  for (int k = 0; k < n; ++k) X.row(order_[k]) = y.row(k);
 }
 
 }  // namespace elastica

@@ -87,6 +87,19 @@ void FlowState::setPositions(const std::vector<Vec3>& p) {
   invalidate();
 }
 
+void FlowState::releaseCaches() {
+  invalidate();
+  keepForReuse_ = false;
+  geo_ = Geometry();
+  curv_ = Curvature();
+  std::vector<Vec3>().swap(lp_);
+  std::vector<Vec3>().swap(evaluatedPositions_);
+  std::vector<Face>().swap(evaluatedFaces_);
+  std::vector<std::uint8_t>().swap(moved_);
+  std::vector<std::uint8_t>().swap(keptFaces_);
+  std::vector<std::uint8_t>().swap(keptEdges_);
+}
+
 void FlowState::evaluateGeometry() {
   if (geometryEvaluated_) return;
   // The per-vertex quantities (areas, normals, angle sums) at the active vertices only: every
@@ -118,8 +131,10 @@ void FlowState::evaluateGeometry() {
   }
   evaluatedPositions_.clear();  // until this evaluation has succeeded
   computeGeometry(topo, p, opt_.area, geo_, &roles().active, kept);
-  evaluatedPositions_ = p;
-  evaluatedFaces_ = faces;
+  if (keepForReuse_) {
+    evaluatedPositions_ = p;
+    evaluatedFaces_ = faces;
+  }
   evaluatedConnectivity_ = connectivityVersion_;
   struct Tally {
     double area = 0, minArea = std::numeric_limits<double>::infinity();

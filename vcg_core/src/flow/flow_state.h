@@ -51,6 +51,11 @@ class FlowState {
   /// The positions, for an integrator to move; call invalidate() after moving them.
   std::vector<Vec3>& positions() { return region_.positions(); }
   void invalidate() { evaluated_ = geometryEvaluated_ = false; }
+  /// Frees the geometry, the curvature and the copies that let an evaluation keep unchanged
+  /// faces' values, until the next evaluation makes them again (whole: the same values): for a
+  /// caller whose own data is the run's peak meanwhile (the fairing amount's factor). From then
+  /// on no evaluation keeps those copies: each computes every face, as the first did.
+  void releaseCaches();
 
   /// Geometry, curvature and energy of the current positions; cached until they change.
   void evaluate();
@@ -95,6 +100,7 @@ class FlowState {
   bool geometryEvaluated_ = false;  // geometry (and active areas) only
   bool energyEvaluated_ = false;    // the energy is computed when asked for, not at every explicit step
   bool scaleFree_ = false;
+  bool keepForReuse_ = true;  // evaluatedPositions_ and evaluatedFaces_ (releaseCaches ends it)
 
   Geometry geo_;
   std::vector<Vec3> evaluatedPositions_;  // what geo_ was last computed from (empty: nothing to keep)

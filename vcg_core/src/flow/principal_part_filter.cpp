@@ -113,9 +113,7 @@ struct PrincipalPartFilter::Solver {
       if (!factorize()) return false;
     }
     if (complexForm.factored()) {  // A⁻¹ b = Re[(M + i s C)⁻¹ b] for real b (DESIGN.md §5)
-      Eigen::MatrixXcd x = b.cast<ComplexSymmetricLdlt::Complex>();
-      complexForm.solve(x, x);
-      displacement = x.real();
+      complexForm.solveRealPart(b, displacement);
       return displacement.allFinite();
     }
     displacement.resize(b.rows(), b.cols());
@@ -143,6 +141,9 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau, AmountOperators 
     if (roles.free[v]) freeIndex_[v] = rows++;
   edgeWeight_ = geo.edgeWeight;
   vertexArea_ = geo.vertexArea;
+  // The factor is the run's peak (at 711,420 vertices 535 MB): the state's geometry and curvature,
+  // of no use to the steps, are not kept beside it (FlowState::releaseCaches; `geo` goes with them).
+  state.releaseCaches();
   if (operators == AmountOperators::Graph) graphAmountOperators(topo, state.positions(), edgeWeight_, vertexArea_);
   tau_ = tau;
   solver_ = std::make_unique<Solver>();
@@ -172,12 +173,15 @@ bool PrincipalPartFilter::step(FlowState& state) {
   // The right-hand side −τ/2 · C M⁻¹ C X = −τ/2 · M Δ_B² X on the free rows (Δ_B = −M⁻¹ C with the
   // input's weights; a free vertex's neighbours are all active, so Δ_B² there is the matrix's
   // C_fa M_aa⁻¹ C_a· product).
-  cotanLaplacian(topo, edgeWeight_, vertexArea_, x, laplacian_);
-  cotanLaplacian(topo, edgeWeight_, vertexArea_, laplacian_, bilaplacian_);
   const int rows = solver_->rows;
   Eigen::MatrixXd b(rows, 3);
-  for (int v = 0; v < nv; ++v)
-    if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = (-0.5 * tau_ * vertexArea_[v]) * bilaplacian_[v].transpose();
+  {  // the two Laplacians go before the solve's own storage comes (the run's peak is beside the factor)
+    std::vector<Vec3> laplacian, bilaplacian;
+    cotanLaplacian(topo, edgeWeight_, vertexArea_, x, laplacian);
+    cotanLaplacian(topo, edgeWeight_, vertexArea_, laplacian, bilaplacian);
+    for (int v = 0; v < nv; ++v)
+      if (freeIndex_[v] >= 0) b.row(freeIndex_[v]) = (-0.5 * tau_ * vertexArea_[v]) * bilaplacian[v].transpose();
+  }
   Eigen::MatrixXd displacement;
   if (!solver_->solve(b, displacement)) return false;
   for (int v = 0; v < nv; ++v)

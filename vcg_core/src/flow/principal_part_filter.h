@@ -43,6 +43,7 @@ class PrincipalPartFilter {
   /// operators of every later step(). Fixed and sliding vertices stay where they are (their
   /// positions enter as data). `operators` Graph: uniform ones instead of the cotangents
   /// (flow/amount_operators.h). False if the matrix is not numerically positive definite.
+  /// Frees `state`'s caches before it factorises (FlowState::releaseCaches).
   bool prepare(FlowState& state, double tau, AmountOperators operators = AmountOperators::Cotangent);
   /// One step: moves the free vertices of `state` (and invalidates its caches). False, with the
   /// positions unchanged, if a displacement is not finite.
@@ -52,8 +53,7 @@ class PrincipalPartFilter {
   struct Solver;
   std::unique_ptr<Solver> solver_;
   std::vector<int> freeIndex_;
-  std::vector<double> edgeWeight_, vertexArea_;
-  std::vector<Vec3> laplacian_, bilaplacian_;  // scratch: Δ_B X and Δ_B² X with the input's weights
+  std::vector<double> edgeWeight_, vertexArea_;  // the input's operators, for every step
   double tau_ = 0;
 };
 
