@@ -546,7 +546,6 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
     ++stage.steps;
     run.time += tau;
     if (run.record(state, stage.level, state.energy())) return;
-    state.releaseCaches();  // not beside the factor while the next step solves (prepare's note)
   }
 }
 
@@ -804,9 +803,8 @@ void requireSelectionSize(const MovingRegion& region) {
 
 // A fairing amount keeps the user's vertices and connectivity: no refinement, no remeshing. Its
 // one stage leaves the selection as it came, and every step in the history.
-// The state takes the region, not a copy of it (on a 711,420-vertex scan a copy was 34 MB of the
-// run's peak), and gives it back however the run ends, as the run left it (fairMasked's promise;
-// a copy used to hand a failed run's caller its input: a failed step keeps the last good one's).
+// The state takes the region, not a copy (34 MB of the peak at 711,420 vertices), and gives it back
+// however the run ends, as the run left it (fairMasked's promise).
 void fairAmount(RegionRun& f) {
   FlowState state(std::move(f.region), f.opt, f.internal, f.slider);
   try {

@@ -173,6 +173,7 @@ bool PrincipalPartFilter::step(FlowState& state) {
   // The right-hand side −τ/2 · C M⁻¹ C X = −τ/2 · M Δ_B² X on the free rows (Δ_B = −M⁻¹ C with the
   // input's weights; a free vertex's neighbours are all active, so Δ_B² there is the matrix's
   // C_fa M_aa⁻¹ C_a· product).
+  state.releaseCaches();  // the last energy's geometry is not kept beside the factor (prepare's note)
   const int rows = solver_->rows;
   Eigen::MatrixXd b(rows, 3);
   {  // the two Laplacians go before the solve's own storage comes (the run's peak is beside the factor)

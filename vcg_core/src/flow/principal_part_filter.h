@@ -43,7 +43,7 @@ class PrincipalPartFilter {
   /// operators of every later step(). Fixed and sliding vertices stay where they are (their
   /// positions enter as data). `operators` Graph: uniform ones instead of the cotangents
   /// (flow/amount_operators.h). False if the matrix is not numerically positive definite.
-  /// Frees `state`'s caches before it factorises (FlowState::releaseCaches).
+  /// Frees `state`'s caches before it factorises, and step() before it solves (FlowState::releaseCaches).
   bool prepare(FlowState& state, double tau, AmountOperators operators = AmountOperators::Cotangent);
   /// One step: moves the free vertices of `state` (and invalidates its caches). False, with the
   /// positions unchanged, if a displacement is not finite.
