@@ -73,8 +73,11 @@ struct GeometryKept {
   /// One flag per edge of `topo`, which `g` was computed for: neither end moved. Keeps its length.
   const std::vector<std::uint8_t>* edges = nullptr;
 };
+/// `floorScale` > 0: the length the degeneracy floors are relative to, and g.meanEdgeLength, instead
+/// of topo's mean edge (a piece of a mesh measured as the whole is: the whole's mean edge length).
 void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g,
-                     const std::vector<std::uint8_t>* active = nullptr, const GeometryKept& kept = {});
+                     const std::vector<std::uint8_t>* active = nullptr, const GeometryKept& kept = {},
+                     double floorScale = 0);
 
 /// Convenience overload returning a fresh cache.
 Geometry computeGeometry(const Topology& topo, const std::vector<Vec3>& p,

@@ -152,6 +152,26 @@ void ComplexSymmetricLdlt::analyzePattern(const Matrix& A) {
   }
 }
 
+ComplexSymmetricLdlt::Matrix ComplexSymmetricLdlt::factorizedPart(const Matrix& A) const {
+  const int n = static_cast<int>(A.rows());
+  Matrix part(n, n);
+  std::int64_t kept = 0;
+  for (int col = 0; col < n; ++col)
+    for (Matrix::InnerIterator it(A, col); it; ++it) kept += position_[it.row()] <= position_[col];
+  part.resizeNonZeros(static_cast<Eigen::Index>(kept));
+  std::int64_t next = 0;
+  for (int col = 0; col < n; ++col) {
+    part.outerIndexPtr()[col] = static_cast<int>(next);
+    for (Matrix::InnerIterator it(A, col); it; ++it)
+      if (position_[it.row()] <= position_[col]) {
+        part.innerIndexPtr()[next] = static_cast<int>(it.row());
+        part.valuePtr()[next++] = it.value();
+      }
+  }
+  part.outerIndexPtr()[n] = static_cast<int>(next);
+  return part;
+}
+
 bool ComplexSymmetricLdlt::factorize(const Matrix& A) {
   const int n = static_cast<int>(A.rows());
   if (columnStart_.size() != static_cast<std::size_t>(n) + 1) analyzePattern(A);

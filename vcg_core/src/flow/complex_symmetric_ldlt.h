@@ -30,6 +30,10 @@ class ComplexSymmetricLdlt {
   void analyzePattern(const Matrix& A);
   /// The numeric factorisation of `A` (the analysed pattern). False on a zero or non-finite pivot.
   bool factorize(const Matrix& A);
+  /// The entries of `A` (the analysed pattern) that factorize() reads: those on or above the
+  /// diagonal in the elimination order, half of them, in A's order, so that the factorisation of
+  /// the result is the same bits. For a caller whose matrix sits beside the factor at its peak.
+  Matrix factorizedPart(const Matrix& A) const;
   /// Solves A X = B for the columns of B with the last successful factorisation, one pass over
   /// the factor for all of them (B and X may be the same matrix).
   void solve(const Eigen::MatrixXcd& B, Eigen::MatrixXcd& X) const;

@@ -1,9 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <elastica/energy.h>
 #include <elastica/errors.h>
+#include "flow/energy_in_pieces.h"
 #include "flow/flow_state.h"
 #include "mesh/edge_flips.h"
 #include "support/parallel.h"
+
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <atomic>
@@ -87,9 +92,10 @@ void FlowState::setPositions(const std::vector<Vec3>& p) {
   invalidate();
 }
 
-void FlowState::releaseCaches() {
+void FlowState::releaseCaches(int energyPieceVertices) {
   invalidate();
   keepForReuse_ = false;
+  energyPieceVertices_ = energyPieceVertices;
   geo_ = Geometry();
   curv_ = Curvature();
   std::vector<Vec3>().swap(lp_);
@@ -98,6 +104,12 @@ void FlowState::releaseCaches() {
   std::vector<std::uint8_t>().swap(moved_);
   std::vector<std::uint8_t>().swap(keptFaces_);
   std::vector<std::uint8_t>().swap(keptEdges_);
+#ifdef __GLIBC__
+  // Give the freed pages back: glibc keeps arrays below its (adaptive, up to 32 MB) mmap threshold
+  // on the heap, and a caller that releases to make room for its own peak wants that room in RSS
+  // too (the 711k elephant's default: peak RSS 1,042 -> 1,017 MB; docs/decisions.md).
+  malloc_trim(0);
+#endif
 }
 
 void FlowState::evaluateGeometry() {
@@ -178,6 +190,13 @@ void FlowState::evaluate() {
 }
 
 double FlowState::energy() {
+  if (energyInPieces()) {
+    if (!energyEvaluated_)
+      energy_ = activeEnergyInPieces(topology(), region_.positions(), roles().active, opt_.area, opt_.curvature,
+                                     energyPieceVertices_);
+    energyEvaluated_ = true;
+    return energy_;
+  }
   evaluate();
   if (!energyEvaluated_) {
     energy_ = totalCurvatureEnergy(topology(), geo_, curv_, &roles().active);

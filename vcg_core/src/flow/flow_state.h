@@ -50,12 +50,16 @@ class FlowState {
   void setPositions(const std::vector<Vec3>& p);
   /// The positions, for an integrator to move; call invalidate() after moving them.
   std::vector<Vec3>& positions() { return region_.positions(); }
-  void invalidate() { evaluated_ = geometryEvaluated_ = false; }
+  void invalidate() { evaluated_ = geometryEvaluated_ = energyEvaluated_ = false; }
   /// Frees the geometry, the curvature and the copies that let an evaluation keep unchanged
   /// faces' values, until the next evaluation makes them again (whole: the same values): for a
   /// caller whose own data is the run's peak meanwhile (the fairing amount's factor). From then
-  /// on no evaluation keeps those copies: each computes every face, as the first did.
-  void releaseCaches();
+  /// on no evaluation keeps those copies: each computes every face, as the first did; and above
+  /// `energyPieceVertices` vertices energy() and lambda() hold no whole-mesh geometry either: the
+  /// energy is measured a piece at a time (flow/energy_in_pieces.h, the same bits), λ is 1 (the
+  /// clamp's; the paper's λ rule keeps the whole evaluation).
+  void releaseCaches(int energyPieceVertices = 1 << 15);
+  double lambda() { return energyInPieces() ? 1.0 : (evaluate(), curv_.lambda); }
 
   /// Geometry, curvature and energy of the current positions; cached until they change.
   void evaluate();
@@ -63,7 +67,6 @@ class FlowState {
   void evaluateGeometry();
   /// Total curvature energy of the active region (free vertices and ring 1).
   double energy();
-  double lambda() { evaluate(); return curv_.lambda; }
   /// Area of the faces with a moving vertex: the length² scale of the energy-rate test.
   double activeArea() { evaluateGeometry(); return activeArea_; }
   /// Smallest non-degenerate face area in the moving region (the paper's A_k).
@@ -101,6 +104,11 @@ class FlowState {
   bool energyEvaluated_ = false;    // the energy is computed when asked for, not at every explicit step
   bool scaleFree_ = false;
   bool keepForReuse_ = true;  // evaluatedPositions_ and evaluatedFaces_ (releaseCaches ends it)
+  int energyPieceVertices_ = 0;  // releaseCaches': measure energy() in pieces above this many vertices
+  bool energyInPieces() const {
+    return !keepForReuse_ && opt_.curvature.h2k != H2KTreatment::PaperLambda &&
+           topology().vertexCount() > energyPieceVertices_;
+  }
 
   Geometry geo_;
   std::vector<Vec3> evaluatedPositions_;  // what geo_ was last computed from (empty: nothing to keep)

@@ -95,6 +95,10 @@ struct PrincipalPartFilter::Solver {
     if (oneRing.rows() > 0) {
       Eigen::SparseMatrix<double>().swap(matrix);
       complexForm.analyzePattern(oneRing);
+      {  // only half of it beside the factor: the same bits
+        ComplexSymmetricLdlt::Matrix part = complexForm.factorizedPart(oneRing);
+        oneRing.swap(part);
+      }
       const bool ok = complexForm.factorize(oneRing);
       ComplexSymmetricLdlt::Matrix().swap(oneRing);
       return ok;

@@ -229,7 +229,7 @@ VertexTally verticesGeometry(const Topology& topo, double areaFloor, const std::
 }  // namespace
 
 void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexArea areaType, Geometry& g,
-                     const std::vector<std::uint8_t>* active, const GeometryKept& kept) {
+                     const std::vector<std::uint8_t>* active, const GeometryKept& kept, double floorScale) {
   checkGeometryInputs(topo, p, g, active, kept);
   const std::vector<std::uint8_t>* keptFace = g.areaType == areaType ? kept.faces : nullptr;
   g.areaType = areaType;
@@ -237,6 +237,7 @@ void computeGeometry(const Topology& topo, const std::vector<Vec3>& p, VertexAre
 
   // Edge lengths first: their mean sets the scale of every floor below.
   g.meanEdgeLength = edgeLengths(topo, p, kept, g);
+  if (floorScale > 0 && std::isfinite(g.meanEdgeLength)) g.meanEdgeLength = floorScale;
   if (!std::isfinite(g.meanEdgeLength)) throw NumericalError("computeGeometry: non-finite vertex position");
   const double ell = g.meanEdgeLength > 0 ? g.meanEdgeLength : 1.0;
   const double areaFloor = kRelativeAreaFloor * ell * ell;
