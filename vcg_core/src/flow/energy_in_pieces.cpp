@@ -20,10 +20,12 @@ std::vector<int> breadthFirstOrder(const Topology& topo) {
   for (int start = 0; start < nv; ++start) {
     if (seen[start]) continue;
     seen[start] = 1;
-    for (std::size_t head = order.size(), end = (order.push_back(start), order.size()); head < end;
-         ++head, end = order.size())
-      for (int k = topo.ringBegin(order[head]); k < topo.ringEnd(order[head]); ++k)
+    order.push_back(start);
+    for (std::size_t head = order.size() - 1; head < order.size(); ++head) {  // `order` is the queue
+      const int v = order[head];
+      for (int k = topo.ringBegin(v); k < topo.ringEnd(v); ++k)
         if (const int w = topo.ringVertex(k); !seen[w]) seen[w] = 1, order.push_back(w);
+    }
   }
   return order;
 }
