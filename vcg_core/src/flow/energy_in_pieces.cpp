@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "flow/energy_in_pieces.h"
+#include "support/index_marks.h"
 #include "support/parallel.h"
 
 #include <elastica/energy.h>
@@ -30,20 +31,6 @@ std::vector<int> breadthFirstOrder(const Topology& topo) {
   return order;
 }
 
-void mark(std::vector<std::uint64_t>& bits, int i) {
-  bits[static_cast<std::size_t>(i) >> 6] |= std::uint64_t{1} << (i & 63);
-}
-
-// The marked indices in ascending order; the marks are cleared.
-void readMarks(std::vector<std::uint64_t>& bits, std::vector<int>& out) {
-  out.clear();
-  for (std::size_t w = 0; w < bits.size(); ++w) {
-    for (std::uint64_t b = bits[w]; b != 0; b &= b - 1)
-      out.push_back(static_cast<int>(64 * w + static_cast<std::size_t>(__builtin_ctzll(b))));
-    bits[w] = 0;
-  }
-}
-
 }  // namespace
 
 double activeEnergyInPieces(const Topology& topo, const std::vector<Vec3>& p, const std::vector<std::uint8_t>& active,
@@ -55,7 +42,7 @@ double activeEnergyInPieces(const Topology& topo, const std::vector<Vec3>& p, co
   std::vector<double> energy(nv, 0.0);
   std::vector<int> local(nv, -1), global, pieceFaceIds;
   std::vector<std::uint8_t> owned(nv, 0), flagged;
-  std::vector<std::uint64_t> faceBits((faces.size() + 63) / 64, 0), vertexBits((static_cast<std::size_t>(nv) + 63) / 64, 0);
+  IndexMarks faceMarks(faces.size()), vertexMarks(static_cast<std::size_t>(nv));
   std::vector<Face> pieceFaces;
   std::vector<Vec3> piecePositions, laplacianOfP;
   Topology pieceTopo;
@@ -64,17 +51,16 @@ double activeEnergyInPieces(const Topology& topo, const std::vector<Vec3>& p, co
   for (int first = 0; first < nv; first += pieceVertices) {
     const int last = std::min(nv, first + pieceVertices);  // the piece owns order[first, last)
     // The faces at the piece's own vertices in the mesh's order, on their vertices numbered in
-    // the mesh's order: each own vertex's fan listed as the whole Topology lists it (marked as
-    // bits and read back in order: sorted without a sort, which cost 5 % of the elephant's run).
+    // the mesh's order: each own vertex's fan listed as the whole Topology lists it.
     for (int i = first; i < last; ++i) {
       const int v = order[i];
       owned[v] = 1;
-      for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) mark(faceBits, topo.corner(k) / 3);
+      for (int k = topo.cornerBegin(v); k < topo.cornerEnd(v); ++k) faceMarks.mark(topo.corner(k) / 3);
     }
-    readMarks(faceBits, pieceFaceIds);
+    faceMarks.take(pieceFaceIds);
     for (int f : pieceFaceIds)
-      for (int v : faces[f]) mark(vertexBits, v);
-    readMarks(vertexBits, global);
+      for (int v : faces[f]) vertexMarks.mark(v);
+    vertexMarks.take(global);
     for (std::size_t i = 0; i < global.size(); ++i) local[global[i]] = static_cast<int>(i);
     pieceFaces.resize(pieceFaceIds.size());
     for (std::size_t f = 0; f < pieceFaceIds.size(); ++f)
