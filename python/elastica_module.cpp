@@ -523,8 +523,8 @@ PYBIND11_MODULE(elastica, m) {
         "auto_feature_size(V, F, selected_faces=None) -> float\n\n"
         "The fairing amount fair() takes by default (feature_size=None), a length in the mesh's units: the 25 %\n"
         "quantile of the edge lengths of the faces to fair (the selected ones, else all) times 2 on a clean\n"
-        "surface, more on a rough one; on a rough one without long slivers, 1.6 + 7.5 (roughness - 0.1) mean\n"
-        "edges, run with uniform operators (report['amount_operators']). What the MeshLab dialog and Blender's redo panel show as the default\n"
+        "surface, more on a rough one; on one rougher than 0.045 without long slivers, 2.2 + 6 (roughness - 0.1)\n"
+        "mean edges, run with uniform operators and twiced (report['amount_operators']). What the MeshLab dialog and Blender's redo panel show as the default\n"
         "feature size, and report['feature_size'] of a default fair() (unless report['feature_size_halvings']).");
   m.def("surface_roughness", &roughnessArrays, py::arg("V"), py::arg("F"), py::arg("selected_faces") = py::none(),
         "surface_roughness(V, F, selected_faces=None) -> float\n\n"

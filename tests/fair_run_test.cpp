@@ -118,15 +118,17 @@ TEST(FairingAmount, RoughnessSeesNoiseNotCurvature) {
   std::printf("roughness: clean icosphere %.4f, radial noise of 0.3 edge %.4f\n", clean, rough);
 }
 
-// The uniform operators' gates: rough (above kCleanRoughness) and no long slivers (mean edge at
+// The uniform operators' gates: rough (above kGraphRoughness) and no long slivers (mean edge at
 // most kGraphMaxEdgeRatio quantile edges; the CAD part joint's 6.6 keeps the cotangents).
 TEST(FairingAmount, UniformOperatorsOnlyForARoughEvenMesh) {
   EXPECT_EQ(amountOperatorsFor(0.15, 1.2, 1.0), AmountOperators::Graph);
   EXPECT_EQ(amountOperatorsFor(0.15, 4.0, 1.0), AmountOperators::Graph);
   EXPECT_EQ(amountOperatorsFor(0.15, 6.6, 1.0), AmountOperators::Cotangent);
-  EXPECT_EQ(amountOperatorsFor(kCleanRoughness, 1.2, 1.0), AmountOperators::Cotangent);
-  EXPECT_EQ(amountOperatorsFor(0.05, 1.2, 1.0), AmountOperators::Cotangent);
+  EXPECT_EQ(amountOperatorsFor(0.05, 1.2, 1.0), AmountOperators::Graph);  // noise of 0.1 edge
+  EXPECT_EQ(amountOperatorsFor(kGraphRoughness, 1.2, 1.0), AmountOperators::Cotangent);
+  EXPECT_EQ(amountOperatorsFor(0.02, 1.2, 1.0), AmountOperators::Cotangent);
   EXPECT_LT(graphAmountEdges(0.15), graphAmountEdges(0.48));  // grows with the roughness
+  EXPECT_EQ(graphAmountEdges(0.01), graphAmountEdges(kGraphRoughness));
 }
 
 }  // namespace

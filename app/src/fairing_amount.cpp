@@ -76,11 +76,11 @@ AutoAmount autoAmount(std::vector<double>& edgeLengths, double roughness) {
 }
 
 double graphAmountEdges(double roughness) {
-  return kGraphEdges + kGraphEdgesPerRoughness * std::max(roughness - kCleanRoughness, 0.0);
+  return kGraphEdges + kGraphEdgesPerRoughness * (std::max(roughness, kGraphRoughness) - kCleanRoughness);
 }
 
 AmountOperators amountOperatorsFor(double roughness, double meanEdge, double quantileEdge) {
-  const bool rough = roughness > kCleanRoughness;
+  const bool rough = roughness > kGraphRoughness;
   return rough && meanEdge <= kGraphMaxEdgeRatio * quantileEdge ? AmountOperators::Graph : AmountOperators::Cotangent;
 }
 

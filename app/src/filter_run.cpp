@@ -275,7 +275,9 @@ void logAmount(FairingResult& r, const FlowOptions& opt, bool selected) {
   r.amountLine = "fairing amount: feature size " + exactDecimal(r.amount.featureSize) + " (" +
                  number(100 * r.amount.perDiagonal, "%.3g") + " % of the bounding-box diagonal, " +
                  number(r.amount.edges, "%.3g") + " mean edge lengths" + (r.amount.automatic ? ", auto" : "") + ")" +
-                 (r.amount.operators == AmountOperators::Graph ? ", uniform operators (a rough scan)" : "");
+                 (r.amount.operators == AmountOperators::Graph
+                      ? ", uniform operators, twiced (roughness " + number(r.amount.roughnessBefore, "%.2g") + ")"
+                      : "");
   if (h > 0)
     r.amountLine += ", halved " + std::to_string(h) + (h == 1 ? " time" : " times") +
                     ": a larger one raised the energy (a feature smaller than it collapsed)";

@@ -144,7 +144,8 @@ struct FlowOptions {
   double featureSize = 0;
   /// The operators of featureSize's filter; default the mesh's cotangents. Not an option of any
   /// face: every face's run (app's runFairing) sets it from the mesh, Graph for a rough scan
-  /// (app/fairing_amount.h), whatever the amount.
+  /// (app/fairing_amount.h), whatever the amount. Graph also twices the filter: it runs again on
+  /// what it took away, which is added back (docs/options.md, "The default amount").
   AmountOperators amountOperators = AmountOperators::Cotangent;
 
   /// Step limit over all stages; default none (the largest count; every face shows it as 0).

@@ -171,13 +171,17 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau, AmountOperators 
   return solver_->factorize();
 }
 bool PrincipalPartFilter::step(FlowState& state) {
-  const Topology& topo = state.topology();
-  std::vector<Vec3>& x = state.positions();
+  state.releaseCaches();  // the last energy's geometry is not kept beside the factor (prepare's note)
+  if (!step(state.topology(), state.positions())) return false;
+  state.invalidate();
+  return true;
+}
+
+bool PrincipalPartFilter::step(const Topology& topo, std::vector<Vec3>& x) {
   const int nv = topo.vertexCount();
   // The right-hand side −τ/2 · C M⁻¹ C X = −τ/2 · M Δ_B² X on the free rows (Δ_B = −M⁻¹ C with the
   // input's weights; a free vertex's neighbours are all active, so Δ_B² there is the matrix's
   // C_fa M_aa⁻¹ C_a· product).
-  state.releaseCaches();  // the last energy's geometry is not kept beside the factor (prepare's note)
   const int rows = solver_->rows;
   Eigen::MatrixXd b(rows, 3);
   {  // the two Laplacians go before the solve's own storage comes (the run's peak is beside the factor)
@@ -191,7 +195,6 @@ bool PrincipalPartFilter::step(FlowState& state) {
   if (!solver_->solve(b, displacement)) return false;
   for (int v = 0; v < nv; ++v)
     if (freeIndex_[v] >= 0) x[v] += displacement.row(freeIndex_[v]).transpose();
-  state.invalidate();
   return true;
 }
 

@@ -48,6 +48,10 @@ class PrincipalPartFilter {
   /// One step: moves the free vertices of `state` (and invalidates its caches). False, with the
   /// positions unchanged, if a displacement is not finite.
   bool step(FlowState& state);
+  /// The same step on a field `x` of `topo`'s vertices (the state's topology) instead of the
+  /// state's positions: the filter is linear, and a twiced amount (featureSizeStage) filters what
+  /// the first pass took away. Values off the free vertices enter as data (zero for that).
+  bool step(const Topology& topo, std::vector<Vec3>& x);
 
  private:
   struct Solver;

@@ -42,15 +42,20 @@ inline constexpr double kEdgesPerRoughness = 16;
 /// A result rougher than this is reported as still rough, with a larger amount suggested.
 inline constexpr double kRoughResult = 0.1;
 
-/// A rough surface (roughness above kCleanRoughness) whose mean edge is at most this many of its
+/// A surface rougher than kGraphRoughness whose mean edge is at most kGraphMaxEdgeRatio of its
 /// kAutoEdgeQuantile edges is faired with AmountOperators::Graph: its cotangents and mixed areas,
 /// built from the noise, are poor, and an even mesh loses little by uniform ones. Long slivers
-/// (the CAD part joint: 6.6) keep cotangents, which know the slivers' shape.
+/// (the CAD part joint: 6.6) keep cotangents, which know the slivers' shape. The gate is below
+/// kCleanRoughness: 3-D vertex noise of 0.1 edge reads 0.052-0.116 on eight libcgal-demo scans,
+/// their clean selves 0.002-0.039, or 0.057-0.098 where the scanner left its own noise (armadillo,
+/// cow, bull); knot1's thin tube reads 0.044 at 0.1 edge and keeps the cotangents, which fair it
+/// closer than the uniform operators at this rule's amount (docs/options.md, "The default amount").
+inline constexpr double kGraphRoughness = 0.045;
 inline constexpr double kGraphMaxEdgeRatio = 4;
-/// The Graph amount in mean edge lengths: kGraphEdges + kGraphEdgesPerRoughness · (ρ − kCleanRoughness).
-inline constexpr double kGraphEdges = 1.6;
-inline constexpr double kGraphEdgesPerRoughness = 7.5;
-
+/// The Graph amount in mean edge lengths: kGraphEdges + kGraphEdgesPerRoughness · (ρ − kCleanRoughness),
+/// for the twiced filter that uniform operators run (flow/fairing.cpp, featureSizeStage).
+inline constexpr double kGraphEdges = 2.2;
+inline constexpr double kGraphEdgesPerRoughness = 6;
 /// The default amount of a mesh's faces, with the operators it runs with and the roughness it
 /// was sized from.
 struct AutoAmount {
@@ -69,7 +74,8 @@ double amountEdges(double roughness);
 /// (3-D noise uniform in a ball of 0.3 edge gives about 0.1). 0 for no faces.
 double surfaceRoughness(const TriMesh& mesh, const FaceSet* region);
 
-/// The Graph operators' amount in mean edge lengths for a surface of `roughness`.
+/// The Graph operators' amount in mean edge lengths for a surface of `roughness` (taken as at least
+/// kGraphRoughness).
 double graphAmountEdges(double roughness);
 
 /// The operators for faces of `roughness`, mean edge `meanEdge` and kAutoEdgeQuantile edge
