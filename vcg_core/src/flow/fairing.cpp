@@ -546,8 +546,8 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
   if (!filter.prepare(state, tau, run.opt.amountOperators))
     throw NumericalError("fair: the fairing amount's matrix is not positive definite (a degenerate moving region)");
   const bool twiced = run.opt.amountOperators == AmountOperators::Graph;
-  std::vector<Vec3> removed;  // x₀, then x₀ − g(x₀), on the free vertices; zero elsewhere
-  if (twiced) removed = state.positions();
+  std::vector<Vec3> start;  // x₀, for the second pass
+  if (twiced) start = state.positions();
   auto failed = [] { throw NumericalError("fair: the fairing amount's step is not finite"); };
   while (!run.limitReached()) {
     ++run.report.steps;
@@ -557,15 +557,9 @@ void featureSizeStage(FlowState& state, Run& run, FlowStage& stage) {
     if (run.record(state, stage.level, state.energy())) return;
   }
   if (!twiced || run.report.stop != StopReason::FeatureSize) return;
-  const std::vector<std::uint8_t>& free = state.roles().free;
-  std::vector<Vec3>& x = state.positions();
-  for (std::size_t v = 0; v < x.size(); ++v) removed[v] = free[v] ? Vec3(removed[v] - x[v]) : Vec3::Zero();
   // The second pass is part of the same flow time's filter: its solves count as no further steps
   // (FlowOptions::maxSteps counts the amount's four).
-  for (int k = 0; k < kFeatureSteps; ++k)
-    if (!filter.step(state.topology(), removed)) failed();
-  for (std::size_t v = 0; v < x.size(); ++v) x[v] += removed[v];
-  state.invalidate();
+  if (!filter.addBackFilteredRemoval(state, std::move(start), static_cast<int>(kFeatureSteps))) failed();
   // The history's last sample (the fourth step's) becomes the twiced result's: same step, same time.
   EnergySample& last = run.report.history.back();
   last.energy = state.energy();

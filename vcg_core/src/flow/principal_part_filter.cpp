@@ -172,12 +172,24 @@ bool PrincipalPartFilter::prepare(FlowState& state, double tau, AmountOperators 
 }
 bool PrincipalPartFilter::step(FlowState& state) {
   state.releaseCaches();  // the last energy's geometry is not kept beside the factor (prepare's note)
-  if (!step(state.topology(), state.positions())) return false;
+  if (!stepField(state.topology(), state.positions())) return false;
   state.invalidate();
   return true;
 }
 
-bool PrincipalPartFilter::step(const Topology& topo, std::vector<Vec3>& x) {
+bool PrincipalPartFilter::addBackFilteredRemoval(FlowState& state, std::vector<Vec3> start, int steps) {
+  std::vector<Vec3>& x = state.positions();
+  std::vector<Vec3>& removed = start;  // start − x in place, on the free vertices; zero elsewhere
+  for (std::size_t v = 0; v < x.size(); ++v) removed[v] = freeIndex_[v] >= 0 ? Vec3(removed[v] - x[v]) : Vec3::Zero();
+  state.releaseCaches();
+  for (int k = 0; k < steps; ++k)
+    if (!stepField(state.topology(), removed)) return false;
+  for (std::size_t v = 0; v < x.size(); ++v) x[v] += removed[v];
+  state.invalidate();
+  return true;
+}
+
+bool PrincipalPartFilter::stepField(const Topology& topo, std::vector<Vec3>& x) {
   const int nv = topo.vertexCount();
   // The right-hand side −τ/2 · C M⁻¹ C X = −τ/2 · M Δ_B² X on the free rows (Δ_B = −M⁻¹ C with the
   // input's weights; a free vertex's neighbours are all active, so Δ_B² there is the matrix's

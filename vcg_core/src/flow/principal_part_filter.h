@@ -48,12 +48,17 @@ class PrincipalPartFilter {
   /// One step: moves the free vertices of `state` (and invalidates its caches). False, with the
   /// positions unchanged, if a displacement is not finite.
   bool step(FlowState& state);
-  /// The same step on a field `x` of `topo`'s vertices (the state's topology) instead of the
-  /// state's positions: the filter is linear, and a twiced amount (featureSizeStage) filters what
-  /// the first pass took away. Values off the free vertices enter as data (zero for that).
-  bool step(const Topology& topo, std::vector<Vec3>& x);
+  /// Twicing's second pass (featureSizeStage): what the steps since `start` (the positions then)
+  /// took away from the free vertices, filtered by `steps` more steps of the same factor, is added
+  /// back. The filter is linear: x ← x + g(start − x). False, with the positions unchanged, if a
+  /// displacement is not finite.
+  bool addBackFilteredRemoval(FlowState& state, std::vector<Vec3> start, int steps);
 
  private:
+  // One step on a field of the state's vertices (positions, or what a pass removed); the values
+  // off the free vertices enter as data.
+  bool stepField(const Topology& topo, std::vector<Vec3>& x);
+
   struct Solver;
   std::unique_ptr<Solver> solver_;
   std::vector<int> freeIndex_;
